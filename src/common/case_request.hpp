@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// What `hemoscale run` hands to a case: the parsed case file and where the outputs go.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "common/config/config_file.hpp"
+
+namespace hs::common {
+
+struct CaseRequest {
+  std::filesystem::path case_dir;                    // the case folder (holds case.toml)
+  ConfigFile* config;                                // parsed case.toml; [case] type already read
+  std::optional<std::filesystem::path> output_dir;   // --output; default: case_dir/runs/run-NNN
+  bool resume = false;                               // --resume: continue the run in output_dir
+  bool quiet = false;                                // --quiet: no progress line
+  bool quick = false;                                // --quick: the coarse CI version of the case
+};
+
+/// Runs one case type; returns the process exit code (0 = ran and its checks passed).
+using CaseRunner = std::function<int(const CaseRequest&)>;
+
+/// Options shared by `hemoscale bench NAME` and `hemoscale validate NAME`.
+struct TaskOptions {
+  std::optional<std::filesystem::path> json_file;    // --json FILE
+  bool quick = false;                                // --quick: a shorter version (CI)
+  std::string extra;                                 // NAME-specific option string (e.g. --closures)
+};
+using TaskRunner = std::function<int(const TaskOptions&)>;
+
+}  // namespace hs::common

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// Run log: messages go to stderr (rank 0 only) and to the run folder's log.txt.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace hs::common {
+
+class Log {
+ public:
+  enum class Level { debug, info, warning, error };
+
+  /// `rank` != 0 writes nothing to stderr (MPI runs print once).
+  explicit Log(int rank = 0, Level threshold = Level::info);
+  /// Also write every message to `file` (appending, so a resumed run keeps its history).
+  void open_file(const std::filesystem::path& file);
+  void set_quiet(bool quiet) { quiet_ = quiet; }
+
+  void write(Level level, const std::string& message);
+
+  template <typename... Args>
+  void info(fmt::format_string<Args...> f, Args&&... args) {
+    write(Level::info, fmt::format(f, std::forward<Args>(args)...));
+  }
+  template <typename... Args>
+  void warning(fmt::format_string<Args...> f, Args&&... args) {
+    write(Level::warning, fmt::format(f, std::forward<Args>(args)...));
+  }
+  template <typename... Args>
+  void error(fmt::format_string<Args...> f, Args&&... args) {
+    write(Level::error, fmt::format(f, std::forward<Args>(args)...));
+  }
+  template <typename... Args>
+  void debug(fmt::format_string<Args...> f, Args&&... args) {
+    write(Level::debug, fmt::format(f, std::forward<Args>(args)...));
+  }
+
+ private:
+  int rank_;
+  Level threshold_;
+  bool quiet_ = false;
+  std::ofstream file_;
+};
+
+}  // namespace hs::common

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// The command line as a user meets it: help, version, and exit code 2 with a clear message on bad input.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code;
+  std::string output;
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(HS_BIN) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path write_case(const std::string& name, const std::string& text) {
+  const auto dir = fs::temp_directory_path() / ("hs_cli_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.toml") << text;
+  return dir;
+}
+
+}  // namespace
+
+TEST(Cli, HelpAndVersion) {
+  const auto help = run("--help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.output.find("run"), std::string::npos);
+  EXPECT_NE(help.output.find("bench"), std::string::npos);
+  EXPECT_NE(help.output.find("validate"), std::string::npos);
+  const auto version = run("--version");
+  EXPECT_EQ(version.code, 0);
+  EXPECT_NE(version.output.find("hemoscale"), std::string::npos);
+}
+
+TEST(Cli, MissingCaseFileIsExitTwo) {
+  const auto r = run("run /nonexistent/case-folder");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("no such case file"), std::string::npos) << r.output;
+}
+
+TEST(Cli, MalformedTomlIsExitTwo) {
+  const auto r = run("run " + write_case("malformed", "[case\ntype = 1\n").string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("malformed TOML"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownCaseTypeIsExitTwo) {
+  const auto r = run("run " + write_case("unknown_type", "[case]\ntype = \"warp-drive\"\n").string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("[case] type = \"warp-drive\""), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownBenchmarkIsExitTwo) {
+  const auto r = run("bench no-such-bench");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("unknown benchmark"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadOptionIsExitTwo) {
+  EXPECT_EQ(run("run --no-such-flag x").code, 2);
+}

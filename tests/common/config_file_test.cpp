@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// Strict case-file reading: every bad input is one ConfigError naming file, key, value and what is allowed.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "common/config/config_file.hpp"
+#include "common/errors.hpp"
+
+using hs::common::ConfigError;
+using hs::common::ConfigFile;
+
+namespace {
+
+std::string error_of(const std::string& toml, void (*read)(ConfigFile&)) {
+  try {
+    auto f = ConfigFile::parse(toml, "case.toml");
+    read(*f);
+    f->finish();
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void read_fluid(ConfigFile& f) {
+  auto fluid = f.root().section("fluid");
+  (void)fluid.positive("kinematic_viscosity_m2_s");
+  (void)fluid.positive_or("density_kg_m3", 1025.0);
+}
+
+}  // namespace
+
+TEST(ConfigFile, ReadsValuesAndFillsDefaults) {
+  auto f = ConfigFile::parse("[fluid]\nkinematic_viscosity_m2_s = 1e-6\n", "case.toml");
+  auto fluid = f->root().section("fluid");
+  EXPECT_DOUBLE_EQ(fluid.positive("kinematic_viscosity_m2_s"), 1e-6);
+  EXPECT_DOUBLE_EQ(fluid.positive_or("density_kg_m3", 1025.0), 1025.0);
+  EXPECT_NO_THROW(f->finish());
+  EXPECT_EQ(f->resolved()["fluid"]["density_kg_m3"].value<double>(), 1025.0);
+}
+
+TEST(ConfigFile, UnknownKeyNamesFileKeyAndAllowedKeys) {
+  const auto msg = error_of("[fluid]\nkinematic_viscosity_m2_s = 1e-6\ndensty_kg_m3 = 1000\n", read_fluid);
+  EXPECT_NE(msg.find("case.toml"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("densty_kg_m3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("density_kg_m3"), std::string::npos) << msg;   // the allowed spelling is listed
+}
+
+TEST(ConfigFile, NegativeViscosityNamesKeyAndValue) {
+  const auto msg = error_of("[fluid]\nkinematic_viscosity_m2_s = -1e-6\n", read_fluid);
+  EXPECT_NE(msg.find("[fluid] kinematic_viscosity_m2_s = -1e-06"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("> 0"), std::string::npos) << msg;
+}
+
+TEST(ConfigFile, WrongTypeAndMissingKeyAreErrors) {
+  EXPECT_NE(error_of("[fluid]\nkinematic_viscosity_m2_s = \"x\"\n", read_fluid).find("must be a number"), std::string::npos);
+  EXPECT_NE(error_of("[fluid]\n", read_fluid).find("missing"), std::string::npos);
+  EXPECT_NE(error_of("x = 1\n", read_fluid).find("missing section"), std::string::npos);
+}
+
+TEST(ConfigFile, MalformedTomlGivesLineAndColumn) {
+  const auto msg = error_of("[fluid\nx = 1\n", read_fluid);
+  EXPECT_NE(msg.find("case.toml:1:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("malformed TOML"), std::string::npos) << msg;
+}
+
+TEST(ConfigFile, MissingFileIsAConfigError) {
+  EXPECT_THROW(ConfigFile::load("/nonexistent/case.toml"), ConfigError);
+}
+
+TEST(ConfigFile, RedundantKeysAreRejected) {
+  auto f = ConfigFile::parse("[numerics]\ntau = 1.0\ntime_step_s = 1e-7\n", "case.toml");
+  auto n = f->root().section("numerics");
+  EXPECT_THROW(n.forbid_together("tau", "time_step_s", "dt follows from dx, tau and nu"), ConfigError);
+}
+
+TEST(ConfigFile, RangesAndChoices) {
+  auto f = ConfigFile::parse("tau = 0.5\nmode = \"bgk\"\nn = 3.5\n", "case.toml");
+  auto r = f->root();
+  EXPECT_THROW((void)r.greater_than("tau", 0.5), ConfigError);
+  EXPECT_THROW((void)r.one_of("mode", {"trt", "mrt"}), ConfigError);
+  EXPECT_THROW((void)r.integer_in("n", 0, 10), ConfigError);
+}
