@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// The shared opening and closing of every `hemoscale run`.
+#include "common/run_context.hpp"
+
+#include <mpi.h>
+
+#include <string>
+
+namespace hs::common {
+
+RunContext RunContext::start(const CaseRequest& request, const std::string& case_type) {
+  request.config->finish();   // every key was read by now: anything left is a typo or unknown
+  RunContext ctx;
+  ctx.case_type_ = case_type;
+  ctx.resume_ = request.resume;
+  ctx.show_progress_ = !request.quiet;
+  ctx.start_ = std::chrono::steady_clock::now();
+  MPI_Comm_rank(MPI_COMM_WORLD, &ctx.rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &ctx.ranks_);
+
+  // Rank 0 claims the folder; the others learn its path (a failure on rank 0 is broadcast as an empty path).
+  std::string path;
+  std::string error;
+  if (ctx.rank_ == 0) {
+    try {
+      if (request.resume) {
+        path = RunFolder::open_existing(*request.output_dir).path().string();
+      } else if (request.output_dir) {
+        path = RunFolder::create_exact(*request.output_dir).path().string();
+      } else {
+        path = RunFolder::create_new(request.case_dir / "runs").path().string();
+      }
+    } catch (const ConfigError& e) {
+      error = e.what();
+    }
+  }
+  int length = static_cast<int>(error.empty() ? path.size() : 0);
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (length == 0) throw ConfigError(ctx.rank_ == 0 ? error : "run folder could not be created (see rank 0)");
+  path.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(path.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+
+  ctx.folder_ = std::make_unique<RunFolder>(RunFolder::open_existing(path));
+  ctx.log_ = std::make_unique<Log>(ctx.rank_);
+  ctx.log_->open_file(ctx.folder_->file("log.txt"));
+  if (ctx.rank_ == 0) request.config->write_resolved(ctx.folder_->file("case.resolved.toml"));
+  ctx.log_->info("{} {}: {}", request.resume ? "resuming" : "running", case_type, ctx.folder_->path().string());
+  return ctx;
+}
+
+double RunContext::wall_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void RunContext::write_summary(nlohmann::json summary) const {
+  if (rank_ != 0) return;
+  summary["case_type"] = case_type_;
+  summary["mpi_ranks"] = ranks_;
+  summary["wall_time_s"] = wall_seconds();
+  summary["provenance"] = provenance();
+  write_json(folder_->file("summary.json"), summary);
+}
+
+}  // namespace hs::common

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// The shared opening and closing of every `hemoscale run`: strict check of the case file, the run folder
+// (new, given, or resumed), the log, case.resolved.toml, and summary.json with provenance and wall time.
+#pragma once
+
+#include <chrono>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "common/case_request.hpp"
+#include "common/log.hpp"
+#include "common/run_folder.hpp"
+
+namespace hs::common {
+
+class RunContext {
+ public:
+  /// Call after the case has read all its keys: rejects unknown keys (ConfigError), then creates or reopens
+  /// the run folder (rank 0 decides, every rank gets the same path), opens log.txt and writes
+  /// case.resolved.toml. MPI must be initialised.
+  static RunContext start(const CaseRequest& request, const std::string& case_type);
+
+  [[nodiscard]] const RunFolder& folder() const { return *folder_; }
+  [[nodiscard]] Log& log() { return *log_; }
+  [[nodiscard]] int rank() const { return rank_; }
+  [[nodiscard]] int ranks() const { return ranks_; }
+  [[nodiscard]] bool resuming() const { return resume_; }
+  [[nodiscard]] bool show_progress() const { return show_progress_ && rank_ == 0; }
+  [[nodiscard]] double wall_seconds() const;
+
+  /// Adds provenance, case type, ranks and wall time to `summary` and writes summary.json (rank 0).
+  void write_summary(nlohmann::json summary) const;
+
+ private:
+  RunContext() = default;
+  std::unique_ptr<RunFolder> folder_;
+  std::unique_ptr<Log> log_;
+  std::string case_type_;
+  int rank_ = 0;
+  int ranks_ = 1;
+  bool resume_ = false;
+  bool show_progress_ = true;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace hs::common
