@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "common/errors.hpp"
+
 namespace hs::common {
 
 RunContext RunContext::start(const CaseRequest& request, const std::string& case_type) {
