@@ -17,8 +17,12 @@ RunContext RunContext::start(const CaseRequest& request, const std::string& case
   ctx.resume_ = request.resume;
   ctx.show_progress_ = !request.quiet;
   ctx.start_ = std::chrono::steady_clock::now();
-  MPI_Comm_rank(MPI_COMM_WORLD, &ctx.rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &ctx.ranks_);
+  int mpi_on = 0;
+  MPI_Initialized(&mpi_on);   // unit tests may call this without MPI: then one rank
+  if (mpi_on) {
+    MPI_Comm_rank(MPI_COMM_WORLD, &ctx.rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &ctx.ranks_);
+  }
 
   // Rank 0 claims the folder; the others learn its path (a failure on rank 0 is broadcast as an empty path).
   std::string path;
@@ -37,10 +41,10 @@ RunContext RunContext::start(const CaseRequest& request, const std::string& case
     }
   }
   int length = static_cast<int>(error.empty() ? path.size() : 0);
-  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (mpi_on) MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
   if (length == 0) throw ConfigError(ctx.rank_ == 0 ? error : "run folder could not be created (see rank 0)");
   path.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(path.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (mpi_on) MPI_Bcast(path.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
 
   ctx.folder_ = std::make_unique<RunFolder>(RunFolder::open_existing(path));
   ctx.log_ = std::make_unique<Log>(ctx.rank_);

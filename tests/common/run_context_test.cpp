@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// The shared run start: unknown keys stop it before any folder is made; a run writes its resolved case.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "common/run_context.hpp"
+
+namespace fs = std::filesystem;
+using namespace hs::common;
+
+TEST(RunContext, CreatesFolderAndResolvedCase) {
+  const auto dir = fs::temp_directory_path() / "hs_run_context";
+  fs::remove_all(dir);
+  auto config = ConfigFile::parse("[fluid]\ndensity_kg_m3 = 1025\n", (dir / "case.toml").string());
+  (void)config->root().section("fluid").positive("density_kg_m3");
+  const CaseRequest request{.case_dir = dir, .config = config.get(), .output_dir = std::nullopt};
+  auto ctx = RunContext::start(request, "test");
+  EXPECT_TRUE(fs::exists(ctx.folder().file("case.resolved.toml")));
+  EXPECT_TRUE(fs::exists(ctx.folder().file("log.txt")));
+  ctx.write_summary({{"answer", 42}});
+  EXPECT_TRUE(fs::exists(ctx.folder().file("summary.json")));
+  EXPECT_EQ(ctx.folder().path().parent_path(), dir / "runs");
+}
+
+TEST(RunContext, UnknownKeyStopsBeforeAnyFolderIsMade) {
+  const auto dir = fs::temp_directory_path() / "hs_run_context_bad";
+  fs::remove_all(dir);
+  auto config = ConfigFile::parse("[fluid]\ndensity_kg_m3 = 1025\nviscosity = 1\n", (dir / "case.toml").string());
+  (void)config->root().section("fluid").positive("density_kg_m3");
+  const CaseRequest request{.case_dir = dir, .config = config.get(), .output_dir = std::nullopt};
+  EXPECT_THROW(RunContext::start(request, "test"), ConfigError);
+  EXPECT_FALSE(fs::exists(dir / "runs"));
+}
