@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// The shape measures of a deformed cell from its membrane vertices: principal axes, deformation index
+// DI = (L - B)/(L + B), projected lengths D_i = L_i / D0, and orientation.
+#pragma once
+
+#include <array>
+#include <span>
+
+#include "common/vec3.hpp"
+
+namespace hs::resolved {
+
+struct CellShape {
+  common::Vec3 centroid_m;
+  std::array<common::Vec3, 3> axes;          // unit principal axes, longest extent first
+  std::array<double, 3> extents_m;           // vertex extent along each axis (max - min projection), descending
+  std::array<double, 3> projected_m;         // extents along x, y, z (L_i for D_i = L_i / D0)
+
+  /// DI = (L - B)/(L + B) with L, B the longest and shortest principal extents (seed paper section 4).
+  [[nodiscard]] double deformation_index() const {
+    return (extents_m[0] - extents_m[2]) / (extents_m[0] + extents_m[2]);
+  }
+};
+
+/// Principal axes of the vertex cloud's second-moment (gyration) tensor; extents measured along them.
+/// pre: at least 4 vertices, unwrapped across periodic boundaries.
+CellShape measure_cell_shape(std::span<const common::Vec3> vertices_m);
+
+/// Angle (rad, in (-pi/2, pi/2]) of the longest axis against `flow` within the plane spanned by `flow` and
+/// `gradient` (the shear plane): the inclination angle of tank-treading and the tumbling angle.
+double inclination_angle(const CellShape& shape, const common::Vec3& flow, const common::Vec3& gradient);
+
+}  // namespace hs::resolved

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Classifies the motion of a cell in shear: tumbling, tank-treading, steady or intermediate, from the
+// inclination of its long axis and the phase of one marker vertex around the centroid.
+#pragma once
+
+#include <span>
+#include <string>
+
+namespace hs::resolved {
+
+enum class FlowMode { steady, tank_treading, tumbling, intermediate };
+
+std::string to_string(FlowMode mode);
+
+/// `inclination_rad`: long-axis angle in the shear plane, folded to (-pi/2, pi/2] (see inclination_angle);
+/// `marker_phase_rad`: angle of a marker vertex about the centroid in the shear plane, in (-pi, pi].
+/// Rules (heuristics, stated so a reader can check them):
+///  - tumbling: the unwrapped inclination turns by more than pi (the whole body rotates);
+///  - tank-treading: inclination range below `swing_limit_rad` while the marker turns by more than 2 pi;
+///  - steady: inclination range below `swing_limit_rad` and the marker turns by less than pi/2;
+///  - intermediate: anything else (swinging, rolling, mixed).
+FlowMode classify_flow_mode(std::span<const double> inclination_rad, std::span<const double> marker_phase_rad,
+                            double swing_limit_rad = 0.35);
+
+/// Removes jumps larger than half of `modulus` between consecutive samples (angle unwrapping).
+void unwrap(std::span<double> angles, double modulus);
+
+}  // namespace hs::resolved
