@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale campaign CAMPAIGN_DIR`: run (or resume) every case of a campaign grid, then assemble its dataset.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "app/commands.hpp"
+#include "campaign/campaign_runner.hpp"
+#include "common/progress.hpp"
+
+namespace hs::app {
+namespace {
+
+struct CampaignArgs {
+  std::string dir;
+  bool status = false;
+  bool retry_failed = false;
+  int max_runs = -1;
+};
+
+int run_campaign(const CampaignArgs& args) {
+  const auto spec = hs::campaign::read_campaign_spec(args.dir);
+  hs::campaign::CampaignRunner runner(spec, {.executable = std::filesystem::read_symlink("/proc/self/exe"),
+                                             .retry_failed = args.retry_failed,
+                                             .show_progress = hs::common::Progress::terminal_attached(),
+                                             .max_runs = args.max_runs});
+  if (args.status) {
+    std::fputs(runner.status_table().c_str(), stdout);
+    return 0;
+  }
+  const int failed = runner.run();
+  std::fputs(runner.status_table().c_str(), stdout);
+  std::printf("dataset: %s\n", spec.dataset_file.string().c_str());
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void add_campaign_command(CLI::App& cli, Action& action) {
+  auto args = std::make_shared<CampaignArgs>();
+  auto* cmd = cli.add_subcommand("campaign", "Run or resume a campaign (CAMPAIGN_DIR/campaign.toml): a grid of runs and their dataset");
+  cmd->add_option("CAMPAIGN_DIR", args->dir, "campaign folder")->required()->check(CLI::ExistingDirectory);
+  cmd->add_flag("--status", args->status, "print what is done, failed and left; run nothing");
+  cmd->add_flag("--retry-failed", args->retry_failed, "run failed runs again");
+  cmd->add_option("--max-runs", args->max_runs, "start at most this many runs in this invocation");
+  cmd->callback([&action, args] { action = [args] { return run_campaign(*args); }; });
+}
+
+}  // namespace hs::app

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: MIT
+// Runs every point of a campaign grid as its own `hemoscale run`, a few at a time, unattended.
+#include "campaign/campaign_runner.hpp"
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "campaign/case_template.hpp"
+#include "campaign/dataset_writer.hpp"
+#include "common/errors.hpp"
+#include "common/io/checkpoint.hpp"
+#include "common/progress.hpp"
+
+namespace hs::campaign {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Starts `hemoscale run` for one record; its console goes to console.txt. The child dies with the campaign
+/// (PR_SET_PDEATHSIG), so an interrupted campaign leaves no orphan behind; the run resumes next time.
+pid_t spawn_run(const CampaignOptions& options, const RunRecord& r, int threads) {
+  std::vector<std::string> args{options.executable.string(), "run", r.case_file().string(), "--output",
+                                r.output_dir().string(), "--quiet"};
+  if (r.state == RunState::resumable) args.emplace_back("--resume");
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid > 0) return pid;
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  const int fd = ::open(r.console_file().c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd >= 0) {
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    ::close(fd);
+  }
+  setenv("OMP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  _exit(127);
+}
+
+/// The last line starting with "error:" or "numerical failure:" in the run's console output.
+std::string failure_reason(const RunRecord& r, int code) {
+  std::ifstream in(r.console_file());
+  std::string line, reason;
+  while (std::getline(in, line)) {
+    if (line.rfind("error:", 0) == 0 || line.rfind("numerical failure:", 0) == 0 || line.rfind("internal error:", 0) == 0) {
+      reason = line;
+    }
+  }
+  return reason.empty() ? fmt::format("exit code {} (see {})", code, r.console_file().string()) : reason;
+}
+
+}  // namespace
+
+CampaignRunner::CampaignRunner(CampaignSpec spec, CampaignOptions options)
+    : spec_(std::move(spec)), options_(std::move(options)) {}
+
+std::vector<RunRecord> CampaignRunner::records() const {
+  std::vector<RunRecord> out;
+  for (const auto& p : grid_points(spec_)) {
+    const std::string name = run_name(spec_, p);
+    const auto dir = spec_.dir / "runs" / name;
+    std::filesystem::create_directories(dir);
+    if (!std::filesystem::exists(dir / "case.toml")) write_run_case(spec_, p, dir / "case.toml");
+    out.push_back(read_run_record(dir, name));
+  }
+  return out;
+}
+
+std::string CampaignRunner::status_table() const {
+  const auto runs = records();
+  std::map<RunState, int> count;
+  std::string out = fmt::format("{:<44} {:<10} {:>10} {:>8}  {}\n", "run", "state", "wall", "attempts", "reason");
+  for (const auto& r : runs) {
+    ++count[r.state];
+    out += fmt::format("{:<44} {:<10} {:>10} {:>8}  {}\n", r.name, to_string(r.state),
+                       r.wall_s > 0 ? common::Progress::format_duration(r.wall_s) : "", r.attempts, r.reason);
+  }
+  out += fmt::format("{} runs: {} done, {} failed, {} resumable, {} pending\n", runs.size(), count[RunState::done],
+                     count[RunState::failed], count[RunState::resumable], count[RunState::pending]);
+  return out;
+}
+
+int CampaignRunner::run() {
+  auto runs = records();
+  std::vector<std::size_t> queue;
+
+  int finished = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (runs[i].state == RunState::failed && options_.retry_failed) runs[i].state = RunState::pending;
+    if (runs[i].state == RunState::pending || runs[i].state == RunState::resumable) queue.push_back(i);
+  }
+  std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
+  int started = 0;
+  std::size_t next = 0;
+  common::Progress progress(fmt::format("campaign {}", spec_.name), static_cast<long>(queue.size()), options_.show_progress);
+  while (next < queue.size() || !running.empty()) {
+    while (next < queue.size() && static_cast<int>(running.size()) < spec_.jobs &&
+           (options_.max_runs < 0 || started < options_.max_runs)) {
+      const std::size_t i = queue[next++];
+      runs[i].attempts += 1;
+      write_run_status(runs[i]);   // attempts.json: counts attempts across interruptions
+      running[spawn_run(options_, runs[i], spec_.threads_per_job)] = {i, Clock::now()};
+      ++started;
+    }
+    if (running.empty()) break;
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) break;
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    auto& r = runs[it->second.first];
+    r.wall_s += std::chrono::duration<double>(Clock::now() - it->second.second).count();
+    running.erase(it);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+      r.state = RunState::done;
+      r.reason.clear();
+    } else if (WIFEXITED(status)) {
+      r.state = RunState::failed;
+      r.reason = failure_reason(r, WEXITSTATUS(status));
+    } else {
+      // Killed by a signal (the machine, the user): not the run's fault; it resumes next time.
+      r.state = common::Checkpoint::exists(r.output_dir() / "checkpoint") ? RunState::resumable : RunState::pending;
+    }
+    write_run_status(r);
+
+    ++finished;
+    progress.update(finished);
+    write_dataset(spec_, runs);
+  }
+  progress.finish();
+  write_dataset(spec_, runs);
+  int failed = 0;
+  for (const auto& r : runs) failed += r.state == RunState::failed ? 1 : 0;
+  
+  return failed;
+}
+
+}  // namespace hs::campaign

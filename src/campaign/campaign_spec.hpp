@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// What a campaign.toml asks for: a case template, a grid of parameter values mapped onto its keys, how many
+// runs at once, and which summary.json results form the dataset.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace hs::campaign {
+
+using GridValue = std::variant<double, std::string>;
+
+/// One axis of the grid: its values are written into `case_key` (a dotted path like "flow.reynolds").
+/// In campaign.toml an axis has either `values = [numbers]` or `labels = ["strings"]`.
+struct GridAxis {
+  std::string name;
+  std::string case_key;
+  std::vector<GridValue> values;
+};
+
+/// One dataset column: a number taken from each run's summary.json at `json_pointer` ("/results/di_mean"),
+/// from the runs whose axis `only_axis` has the value `only_value` (empty: any run of the row).
+struct DatasetColumn {
+  std::string name;
+  std::string json_pointer;
+  std::string only_axis;
+  std::string only_value;
+};
+
+struct CampaignSpec {
+  std::filesystem::path dir;                 // the campaign folder
+  std::string name;
+  std::filesystem::path template_case;       // case.toml every run starts from
+  int jobs = 2;                              // runs at the same time
+  int threads_per_job = 1;                   // OMP_NUM_THREADS of each run
+  std::vector<GridAxis> axes;
+  std::filesystem::path dataset_file;
+  std::vector<std::string> row_axes;         // axes that make a row (the others are merged into it)
+  std::vector<DatasetColumn> columns;
+};
+
+/// Reads and checks `dir/campaign.toml` (strict: ConfigError naming key and value on any problem).
+CampaignSpec read_campaign_spec(const std::filesystem::path& dir);
+
+/// Text of a grid value as it appears in run names and dataset cells ("0.3", "drag").
+std::string to_text(const GridValue& v);
+
+}  // namespace hs::campaign

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// Writes the case file of one campaign run.
+#include "campaign/case_template.hpp"
+
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "common/errors.hpp"
+#include "common/io/atomic_file.hpp"
+
+namespace hs::campaign {
+
+std::vector<GridPoint> grid_points(const CampaignSpec& spec) {
+  std::vector<GridPoint> points{GridPoint{}};
+  for (const auto& axis : spec.axes) {
+    std::vector<GridPoint> next;
+    for (const auto& p : points) {
+      for (const auto& v : axis.values) {
+        GridPoint q = p;
+        q.values.push_back(v);
+        next.push_back(std::move(q));
+      }
+    }
+    points = std::move(next);
+  }
+  return points;
+}
+
+std::string run_name(const CampaignSpec& spec, const GridPoint& point) {
+  std::string name;
+  for (std::size_t i = 0; i < spec.axes.size(); ++i) {
+    name += fmt::format("{}{}-{}", i ? "_" : "", spec.axes[i].name, to_text(point.values[i]));
+  }
+  return name;
+}
+
+void write_run_case(const CampaignSpec& spec, const GridPoint& point, const std::filesystem::path& file) {
+  toml::table doc;
+  try {
+    doc = toml::parse_file(spec.template_case.string());
+  } catch (const toml::parse_error& e) {
+    throw common::ConfigError(fmt::format("{}: malformed TOML: {}", spec.template_case.string(), e.description()));
+  }
+  for (std::size_t i = 0; i < spec.axes.size(); ++i) {
+    const std::string& key = spec.axes[i].case_key;
+    toml::table* t = &doc;
+    std::size_t start = 0;
+    for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.', start)) {
+      const std::string part = key.substr(start, dot - start);
+      if (!t->contains(part)) t->insert(part, toml::table{});
+      t = t->get(part)->as_table();
+      if (t == nullptr) {
+        throw common::ConfigError(fmt::format("{}: [grid.{}] key = \"{}\": '{}' is not a table in the template",
+                                              (spec.dir / "campaign.toml").string(), spec.axes[i].name, key, part));
+      }
+      start = dot + 1;
+    }
+    const std::string leaf = key.substr(start);
+    if (const auto* d = std::get_if<double>(&point.values[i])) {
+      t->insert_or_assign(leaf, *d);
+    } else {
+      t->insert_or_assign(leaf, std::get<std::string>(point.values[i]));
+    }
+  }
+  std::ostringstream text;
+  text << "# Written by `hemoscale campaign` from " << spec.template_case.filename().string() << " with "
+       << run_name(spec, point) << "\n" << doc << "\n";
+  common::write_file_atomic(file, text.str());
+}
+
+}  // namespace hs::campaign

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// The state of one campaign run, kept in its folder.
+#include "campaign/run_record.hpp"
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/io/atomic_file.hpp"
+#include "common/io/checkpoint.hpp"
+
+namespace hs::campaign {
+
+std::string to_string(RunState state) {
+  switch (state) {
+    case RunState::pending: return "pending";
+    case RunState::resumable: return "resumable";
+    case RunState::done: return "done";
+    case RunState::failed: return "failed";
+  }
+  return "unknown";
+}
+
+RunRecord read_run_record(const std::filesystem::path& dir, const std::string& name) {
+  RunRecord r;
+  r.dir = dir;
+  r.name = name;
+  std::ifstream in(dir / "status.json");
+  if (in) {
+    const auto j = nlohmann::json::parse(in, nullptr, false);
+    if (!j.is_discarded()) {
+      const std::string s = j.value("state", "");
+      r.reason = j.value("reason", "");
+      r.wall_s = j.value("wall_s", 0.0);
+      r.attempts = j.value("attempts", 0);
+      if (s == "done") r.state = RunState::done;
+      if (s == "failed") r.state = RunState::failed;
+      if (r.state != RunState::pending) return r;
+    }
+  }
+  const auto progress = dir / "attempts.json";   // counts interrupted attempts between status writes
+  std::ifstream pin(progress);
+  if (pin) {
+    const auto j = nlohmann::json::parse(pin, nullptr, false);
+    if (!j.is_discarded()) {
+      r.attempts = j.value("attempts", 0);
+      r.wall_s = j.value("wall_s", 0.0);
+    }
+  }
+  if (common::Checkpoint::exists(r.output_dir() / "checkpoint")) r.state = RunState::resumable;
+  return r;
+}
+
+void write_run_status(const RunRecord& record) {
+  const nlohmann::json j{{"state", to_string(record.state)}, {"reason", record.reason}, {"wall_s", record.wall_s},
+                         {"attempts", record.attempts}};
+  const auto file = record.state == RunState::done || record.state == RunState::failed ? record.dir / "status.json"
+                                                                                        : record.dir / "attempts.json";
+  common::write_file_atomic(file, j.dump(2) + "\n");
+}
+
+}  // namespace hs::campaign
