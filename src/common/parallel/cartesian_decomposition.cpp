@@ -22,6 +22,12 @@ CartesianDecomposition::CartesianDecomposition(const DecompositionSpec& spec, MP
   int comm_size = 1;
   MPI_Comm_size(comm, &comm_size);
   dims_ = spec.ranks_per_axis;
+  int fixed = 1;
+  for (const int d : dims_) fixed *= d > 0 ? d : 1;
+  if (comm_size % fixed != 0) {
+    throw std::invalid_argument(fmt::format("ranks per axis ({}, {}, {}) do not divide the {} ranks", dims_[0], dims_[1],
+                                            dims_[2], comm_size));
+  }
   MPI_Dims_create(comm_size, 3, dims_.data());
   std::array<int, 3> periods{};
   for (int a = 0; a < 3; ++a) {
