@@ -67,12 +67,17 @@ void FluidLattice::check_health(const HealthLimits& limits) const {
       }
     }
   }
-  const double any = common::global_max(problem.empty() ? 0.0 : 1.0, decomposition_->comm());
-  if (any > 0.0) {
-    throw common::NumericalError(problem.empty()
-                                     ? std::string("lattice Boltzmann watchdog: breakdown reported by another rank")
-                                     : "lattice Boltzmann watchdog: " + problem);
-  }
+  // Every rank throws the same message: the one of the highest rank that found a problem, broadcast from it.
+  const MPI_Comm comm = decomposition_->comm();
+  const int mine = problem.empty() ? -1 : decomposition_->rank();
+  int source = -1;
+  MPI_Allreduce(&mine, &source, 1, MPI_INT, MPI_MAX, comm);
+  if (source < 0) return;
+  int length = static_cast<int>(problem.size());
+  MPI_Bcast(&length, 1, MPI_INT, source, comm);
+  problem.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(problem.data(), length, MPI_CHAR, source, comm);
+  throw common::NumericalError("lattice Boltzmann watchdog: " + problem);
 }
 
 }  // namespace hs::resolved
