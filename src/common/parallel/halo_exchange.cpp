@@ -27,14 +27,16 @@ std::array<std::array<int, 2>, 3> slab_ranges(const BlockLayout& l, int axis, in
 
 HaloExchange::HaloExchange(const CartesianDecomposition& decomposition) : decomposition_(decomposition) {}
 
-void HaloExchange::exchange(std::span<double> field, int components) {
+void HaloExchange::exchange(std::span<double> field, int components, std::size_t stride) {
+  stride_ = stride == 0 ? decomposition_.layout().volume() : stride;
   std::vector<int> all(static_cast<std::size_t>(components));
   std::iota(all.begin(), all.end(), 0);
   for (int axis = 0; axis < 3; ++axis) exchange_axis(field, axis, all, all);
 }
 
 void HaloExchange::exchange(std::span<double> field,
-                            const std::array<std::array<std::vector<int>, 2>, 3>& per_face) {
+                            const std::array<std::array<std::vector<int>, 2>, 3>& per_face, std::size_t stride) {
+  stride_ = stride == 0 ? decomposition_.layout().volume() : stride;
   for (int axis = 0; axis < 3; ++axis) exchange_axis(field, axis, per_face[axis][0], per_face[axis][1]);
 }
 
@@ -44,7 +46,7 @@ void HaloExchange::pack(std::span<const double> field, int axis, int first, cons
   const auto r = slab_ranges(l, axis, first);
   buf.clear();
   for (const int c : comps) {
-    const std::size_t base = static_cast<std::size_t>(c) * l.volume();
+    const std::size_t base = static_cast<std::size_t>(c) * stride_;
     for (int z = r[2][0]; z < r[2][1]; ++z) {
       for (int y = r[1][0]; y < r[1][1]; ++y) {
         for (int x = r[0][0]; x < r[0][1]; ++x) buf.push_back(field[base + static_cast<std::size_t>(l.index(x, y, z))]);
@@ -59,7 +61,7 @@ void HaloExchange::unpack(std::span<double> field, int axis, int first, const st
   const auto r = slab_ranges(l, axis, first);
   std::size_t k = 0;
   for (const int c : comps) {
-    const std::size_t base = static_cast<std::size_t>(c) * l.volume();
+    const std::size_t base = static_cast<std::size_t>(c) * stride_;
     for (int z = r[2][0]; z < r[2][1]; ++z) {
       for (int y = r[1][0]; y < r[1][1]; ++y) {
         for (int x = r[0][0]; x < r[0][1]; ++x) field[base + static_cast<std::size_t>(l.index(x, y, z))] = buf[k++];

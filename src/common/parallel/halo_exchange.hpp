@@ -18,11 +18,12 @@ class HaloExchange {
  public:
   explicit HaloExchange(const CartesianDecomposition& decomposition);
 
-  /// Exchanges every component of `field` (size = components * volume()). Collective.
-  void exchange(std::span<double> field, int components);
+  /// Exchanges every component of `field` (component c at c * stride; stride 0 means volume()). Collective.
+  void exchange(std::span<double> field, int components, std::size_t stride = 0);
   /// Exchanges only the listed components; `per_face[axis][side]` lists the components sent through that
   /// face (e.g. only the populations that leave the block there). Collective.
-  void exchange(std::span<double> field, const std::array<std::array<std::vector<int>, 2>, 3>& per_face);
+  void exchange(std::span<double> field, const std::array<std::array<std::vector<int>, 2>, 3>& per_face,
+                std::size_t stride = 0);
 
  private:
   void exchange_axis(std::span<double> field, int axis, const std::vector<int>& to_low,
@@ -31,6 +32,8 @@ class HaloExchange {
             std::vector<double>& buf) const;
   void unpack(std::span<double> field, int axis, int first, const std::vector<int>& comps,
               const std::vector<double>& buf) const;
+
+  std::size_t stride_ = 0;   // component stride of the field being exchanged
 
   const CartesianDecomposition& decomposition_;
   std::vector<double> send_low_, send_high_, recv_low_, recv_high_;

@@ -7,6 +7,13 @@
 #include <utility>
 
 namespace hs::resolved {
+namespace {
+
+/// Streaming (non-temporal) stores pay off only when the two population arrays are far larger than the last-level
+/// cache, which they then bypass; 256 MiB is beyond the L3 of current server CPUs (32-256 MiB per socket).
+constexpr std::size_t kStreamingStoreBytes = std::size_t{256} << 20;
+
+}  // namespace
 
 FluidLattice::FluidLattice(const LatticeSpec& spec, MPI_Comm comm) : spec_(spec) {
   spec_.collision.validate();
@@ -17,6 +24,7 @@ FluidLattice::FluidLattice(const LatticeSpec& spec, MPI_Comm comm) : spec_(spec)
                                 .ghost = 1},
       comm);
   layout_ = decomposition_->layout();
+  stride_ = (layout_.volume() + 7) / 8 * 8;
   halo_ = std::make_unique<common::HaloExchange>(*decomposition_);
   for (std::size_t i = 0; i < D3Q19::q; ++i) {
     offsets_[i] = layout_.offset(D3Q19::c[i][0], D3Q19::c[i][1], D3Q19::c[i][2]);
@@ -62,14 +70,14 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
   build_open_nodes();
   build_wall_links();
   reduced_halo_ = open_nodes_.empty();
-  src_.assign(D3Q19::q * layout_.volume(), 0.0);
+  src_.assign(D3Q19::q * stride_, 0.0);
   for (std::size_t n = 0; n < layout_.volume(); ++n) {
     const auto g = global_of(static_cast<std::ptrdiff_t>(n));
     NodeInit s{.rho_lu = spec_.rho0_lu, .u_lu = {}};
     if (init && flags_[n] != kShapeSolid && flags_[n] != kFaceSolid) {
       s = init(common::Vec3{static_cast<double>(g[0]), static_cast<double>(g[1]), static_cast<double>(g[2])});
     }
-    for (int i = 0; i < D3Q19::q; ++i) src_[static_cast<std::size_t>(i) * layout_.volume() + n] = equilibrium(i, s.rho_lu, s.u_lu);
+    for (int i = 0; i < D3Q19::q; ++i) src_[static_cast<std::size_t>(i) * stride_ + n] = equilibrium(i, s.rho_lu, s.u_lu);
   }
   dst_ = src_;
   complete_state();
@@ -78,27 +86,38 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
 
 void FluidLattice::complete_state() {
   if (reduced_halo_) {
-    halo_->exchange(src_, halo_components_);
+    halo_->exchange(src_, halo_components_, stride_);
   } else {
-    halo_->exchange(src_, D3Q19::q);
+    halo_->exchange(src_, D3Q19::q, stride_);
   }
-  apply_open_boundaries(open_nodes_, src_.data(), layout_.volume());
-  apply_wall_links(links_, src_.data(), layout_.volume());
+  apply_open_boundaries(open_nodes_, src_.data(), stride_);
+  apply_wall_links(links_, src_.data(), stride_);
 }
 
 void FluidLattice::step() {
   stream_collide(StreamCollideArgs{.src = src_.data(),
                                    .dst = dst_.data(),
-                                   .volume = layout_.volume(),
+                                   .volume = stride_,
                                    .offset = offsets_,
                                    .runs = runs_,
                                    .body_force = body_force_,
                                    .force_field = force_field_.empty() ? nullptr : force_field_.data(),
+                                   .force_stride = layout_.volume(),
                                    .omega_plus = spec_.collision.omega_plus(),
-                                   .omega_minus = spec_.collision.omega_minus()});
+                                   .omega_minus = spec_.collision.omega_minus(),
+                                   .streaming_stores = streaming_stores()});
   std::swap(src_, dst_);
   complete_state();
   ++steps_;
+}
+
+bool FluidLattice::streaming_stores() const {
+  switch (spec_.store_mode) {
+    case StoreMode::ordinary: return false;
+    case StoreMode::streaming: return true;
+    case StoreMode::automatic: break;
+  }
+  return 2 * src_.size() * sizeof(double) > kStreamingStoreBytes;
 }
 
 void FluidLattice::run(long steps) {
@@ -107,7 +126,7 @@ void FluidLattice::run(long steps) {
 
 double FluidLattice::population(int x, int y, int z, int i) const {
   const auto ii = static_cast<std::size_t>(i);
-  return src_[ii * layout_.volume() + static_cast<std::size_t>(index(x, y, z) - offsets_[ii])];
+  return src_[ii * stride_ + static_cast<std::size_t>(index(x, y, z) - offsets_[ii])];
 }
 
 Populations FluidLattice::populations(int x, int y, int z) const {

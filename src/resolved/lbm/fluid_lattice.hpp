@@ -15,6 +15,7 @@
 #include "common/parallel/cartesian_decomposition.hpp"
 #include "common/parallel/halo_exchange.hpp"
 #include "common/vec3.hpp"
+#include "resolved/lbm/aligned_allocator.hpp"
 #include "resolved/lbm/boundary_links.hpp"
 #include "resolved/lbm/collision_params.hpp"
 #include "resolved/lbm/equilibrium.hpp"
@@ -22,12 +23,16 @@
 
 namespace hs::resolved {
 
+/// How the kernel writes populations: `automatic` streams (non-temporal stores) when the arrays are far beyond cache.
+enum class StoreMode { automatic, ordinary, streaming };
+
 struct LatticeSpec {
   std::array<int, 3> global_nodes{};       // nodes per axis of the whole lattice
   std::array<bool, 3> periodic{};          // periodic axes; other axes end in walls or open faces
   CollisionParams collision;
   std::array<int, 3> ranks_per_axis{};     // 0 = let MPI choose
   double rho0_lu = 1.0;                    // reference density (initial state, moving-wall term)
+  StoreMode store_mode = StoreMode::automatic;
 };
 
 /// Where the lattice sits in the Shape's coordinates: global node (i, j, k) is at origin + spacing (i, j, k).
@@ -126,6 +131,7 @@ class FluidLattice {
     double rho_lu = 1.0;
   };
 
+  [[nodiscard]] bool streaming_stores() const;
   [[nodiscard]] unsigned char classify(const std::array<int, 3>& global) const;
   [[nodiscard]] common::Vec3 shape_point(const std::array<int, 3>& global) const;
   void classify_nodes();
@@ -147,7 +153,9 @@ class FluidLattice {
   std::array<std::array<common::Vec3, 2>, 3> face_wall_velocity_{};
   std::array<std::array<std::optional<OpenFace>, 2>, 3> open_faces_{};
   common::Vec3 body_force_;
-  std::vector<double> src_, dst_, force_field_;
+  std::size_t stride_ = 0;   // component stride of the populations: volume() rounded up to whole cache lines
+  AlignedDoubles src_, dst_;
+  std::vector<double> force_field_;
   std::vector<unsigned char> flags_;
   std::vector<FluidRun> runs_;
   std::vector<WallLink> links_;
