@@ -200,7 +200,7 @@ int run_tube_poiseuille(const common::CaseRequest& request) {
   log.info("tube-poiseuille: R = {:g} m ({:.1f} lattice spacings), lattice {}x{}x{}, tau = {}, dt = {:.4g} s, "
            "U_max = {:.4g} m/s, Re = {}, lattice Mach = {:.4f}, {} wall links",
            c.radius_m, r_lu, nodes[0], nodes[1], nodes[2], c.collision.tau, c.dt_s, c.u_max_m_s, c.reynolds,
-           c.lattice_mach, lattice.wall_link_count());
+           c.lattice_mach, common::global_sum(static_cast<long>(lattice.wall_link_count()), MPI_COMM_WORLD));
   std::unique_ptr<common::CsvWriter> csv;
   std::unique_ptr<common::PvdSeries> pvd;
   if (run) {

@@ -95,7 +95,7 @@ class FluidLattice {
   [[nodiscard]] const CollisionParams& collision() const { return spec_.collision; }
   [[nodiscard]] std::array<int, 3> offset() const { return decomposition_->offset(); }
   [[nodiscard]] bool is_fluid(int x, int y, int z) const { return flags_[static_cast<std::size_t>(layout_.index(x, y, z))] == kFluid; }
-  /// Pre-collision population f_i at a local node (interior or ghost-adjacent interior).
+  /// Pre-collision population f_i at a local interior node (ghost nodes are not valid arguments).
   [[nodiscard]] double population(int x, int y, int z, int i) const;
   [[nodiscard]] Populations populations(int x, int y, int z) const;
   /// Force density acting at a node this step (body force + force field).
