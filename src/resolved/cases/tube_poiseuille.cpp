@@ -24,6 +24,7 @@
 #include "common/parallel/reductions.hpp"
 #include "common/progress.hpp"
 #include "common/run_folder.hpp"
+#include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
 #include "resolved/cases/tube_poiseuille_config.hpp"
 #include "resolved/lbm/fluid_lattice.hpp"
@@ -95,16 +96,17 @@ struct Outcome {
   Observables obs;
   long steps;
   bool converged;
+  nlohmann::json timings;   // wall seconds per time-loop stage
 };
 
 /// Time loop to steady state: every check interval compare u_max and Q with the previous check.
 Outcome run_to_steady_state(FluidLattice& lattice, const TubePoiseuilleConfig& c, const common::UnitConverter& units,
                             int slices, const std::function<void(long)>& frame_due, common::CsvWriter* csv,
-                            common::Progress& progress) {
+                            common::Progress& progress, common::TimeLoop& loop) {
   Observables last = observe(lattice, slices);
   bool converged = false;
-  while (lattice.steps_done() < c.max_steps && !converged) {
-    lattice.run(std::min(c.check_every_steps, c.max_steps - lattice.steps_done()));
+  while (!converged && lattice.steps_done() < c.max_steps) {
+    loop.run_steps(c.check_every_steps);
     lattice.check_health();
     const Observables now = observe(lattice, slices);
     const double change = std::max(std::abs(now.u_max_lu - last.u_max_lu) / now.u_max_lu,
@@ -119,7 +121,7 @@ Outcome run_to_steady_state(FluidLattice& lattice, const TubePoiseuilleConfig& c
     progress.update(lattice.steps_done());
   }
   progress.finish();
-  return {last, lattice.steps_done(), converged};
+  return {last, lattice.steps_done(), converged, loop.timings()};
 }
 
 /// Compares with Poiseuille, writes summary.json, prints the check and where the outputs went; returns the exit code.
@@ -159,6 +161,7 @@ int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, co
   s["tolerance_flow_rate"] = kFlowRateTolerance;
   s["check_passed"] = passed;
   s["wall_time_s"] = wall_s;
+  s["stage_timings"] = out.timings;
   s["provenance"] = common::provenance();
   common::write_json(run->file("summary.json"), s);
   log.info("outputs: {} (summary.json, timeseries.csv, fields.pvd + vtk/, units.txt, case.resolved.toml, log.txt)",
@@ -220,7 +223,12 @@ int run_tube_poiseuille(const common::CaseRequest& request) {
     last_frame_step = step;
   };
   common::Progress progress("tube-poiseuille", expected, !request.quiet && rank == 0);
-  const Outcome out = run_to_steady_state(lattice, c, units, nodes[2], frame_due, csv.get(), progress);
+  common::TimeLoop loop(c.max_steps);
+  loop.add("lbm_stream_collide", [&] { lattice.stream_collide(); });
+  loop.add("halo_exchange", [&] { lattice.exchange_halos(); });
+  loop.add("lbm_boundaries", [&] { lattice.apply_boundaries(); });
+  const Outcome out = run_to_steady_state(lattice, c, units, nodes[2], frame_due, csv.get(), progress, loop);
+  log.info("wall time per stage:\n{}", loop.timing_table());
   if (last_frame_step != out.steps) write_frame(lattice, units, nodes, origin_m, folder, pvd.get(), frame++);
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report(c, units, out, wall_s, folder, log);

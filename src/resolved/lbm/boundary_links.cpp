@@ -29,7 +29,8 @@ WallLink make_wall_link(std::ptrdiff_t node, std::ptrdiff_t target, std::ptrdiff
 void apply_wall_links(std::span<const WallLink> links, double* src, std::size_t volume) {
   const auto n = static_cast<std::ptrdiff_t>(links.size());
   const auto vol = static_cast<std::ptrdiff_t>(volume);
-#pragma omp parallel for schedule(static) if (n >= 4096)
+  // Each link costs a few memory accesses: only tens of thousands of them are worth a parallel region.
+#pragma omp parallel for schedule(static) if (n >= 65536)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const WallLink& l = links[static_cast<std::size_t>(k)];
     const std::ptrdiff_t i = l.dir;

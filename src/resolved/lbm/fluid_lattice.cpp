@@ -12,6 +12,9 @@ namespace {
 /// Streaming (non-temporal) stores pay off only when the two population arrays are far larger than the last-level
 /// cache, which they then bypass; 256 MiB is beyond the L3 of current server CPUs (32-256 MiB per socket).
 constexpr std::size_t kStreamingStoreBytes = std::size_t{256} << 20;
+/// Below this many fluid nodes a step takes less than ~0.1 ms on one core and stays single-threaded: an OpenMP
+/// parallel region costs microseconds on an idle machine and whole scheduler slices on an oversubscribed one.
+constexpr std::size_t kMinNodesForThreads = 32768;
 
 }  // namespace
 
@@ -85,17 +88,30 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
 }
 
 void FluidLattice::complete_state() {
+  exchange_halos();
+  apply_boundaries();
+}
+
+void FluidLattice::exchange_halos() {
   if (reduced_halo_) {
     halo_->exchange(src_, halo_components_, stride_);
   } else {
     halo_->exchange(src_, D3Q19::q, stride_);
   }
+}
+
+void FluidLattice::apply_boundaries() {
   apply_open_boundaries(open_nodes_, src_.data(), stride_);
   apply_wall_links(links_, src_.data(), stride_);
 }
 
 void FluidLattice::step() {
-  stream_collide(StreamCollideArgs{.src = src_.data(),
+  stream_collide();
+  complete_state();
+}
+
+void FluidLattice::stream_collide() {
+  resolved::stream_collide(StreamCollideArgs{.src = src_.data(),
                                    .dst = dst_.data(),
                                    .volume = stride_,
                                    .offset = offsets_,
@@ -105,9 +121,9 @@ void FluidLattice::step() {
                                    .force_stride = layout_.volume(),
                                    .omega_plus = spec_.collision.omega_plus(),
                                    .omega_minus = spec_.collision.omega_minus(),
-                                   .streaming_stores = streaming_stores()});
+                                   .streaming_stores = streaming_stores(),
+                                             .threaded = fluid_nodes_ >= kMinNodesForThreads});
   std::swap(src_, dst_);
-  complete_state();
   ++steps_;
 }
 

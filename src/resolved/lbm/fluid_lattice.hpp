@@ -84,8 +84,14 @@ class FluidLattice {
   void initialize(const std::function<NodeInit(const common::Vec3&)>& init = {});
 
   // ---- time stepping ----
-  /// One step: fused stream+collide, then halo exchange and boundary passes. Collective.
+  /// One step = stream_collide(); exchange_halos(); apply_boundaries(). Collective.
   void step();
+  /// Stage 1: fused pull-stream + collision on every fluid node (uses the force field as it is now).
+  void stream_collide();
+  /// Stage 2: ghost-layer exchange of the new post-collision populations. Collective.
+  void exchange_halos();
+  /// Stage 3: open-boundary and wall passes; afterwards the state is complete (moments() etc. are valid).
+  void apply_boundaries();
   void run(long steps);
   [[nodiscard]] long steps_done() const { return steps_; }
 
@@ -158,6 +164,7 @@ class FluidLattice {
   std::vector<double> force_field_;
   std::vector<unsigned char> flags_;
   std::vector<FluidRun> runs_;
+  std::size_t fluid_nodes_ = 0;
   std::vector<WallLink> links_;
   std::vector<OpenNode> open_nodes_;
   std::array<std::array<std::vector<int>, 2>, 3> halo_components_;

@@ -44,6 +44,7 @@ void FluidLattice::classify_nodes() {
 
 void FluidLattice::build_runs() {
   runs_.clear();
+  fluid_nodes_ = 0;
   for (int z = 0; z < layout_.n[2]; ++z) {
     for (int y = 0; y < layout_.n[1]; ++y) {
       int x = 0;
@@ -52,6 +53,7 @@ void FluidLattice::build_runs() {
         const int start = x;
         while (x < layout_.n[0] && is_fluid(x, y, z)) ++x;
         if (x > start) runs_.push_back({index(start, y, z), x - start});
+        fluid_nodes_ += static_cast<std::size_t>(x - start);
       }
     }
   }

@@ -10,7 +10,6 @@ namespace hs::resolved {
 namespace {
 
 using C = D3Q19;
-constexpr std::ptrdiff_t kMinRunsForThreads = 256;
 
 /// Updates nodes [begin, end). The loop body is straight-line code over the 19 directions, so the
 /// compiler unrolls it and vectorises along x.
@@ -111,8 +110,7 @@ void stream_collide(const StreamCollideArgs& a) {
   }
   const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
   const bool has_field = a.force_field != nullptr;
-  // Tiny blocks (tests, thin slabs) run on one thread: a parallel region costs more than they do.
-#pragma omp parallel if (runs >= kMinRunsForThreads)
+#pragma omp parallel if (a.threaded)
   {
 #pragma omp for schedule(static)
     for (std::ptrdiff_t r = 0; r < runs; ++r) {

@@ -29,6 +29,7 @@ struct StreamCollideArgs {
   double omega_plus;                             // 1/tau+
   double omega_minus;                            // 1/tau- (= omega_plus for BGK)
   bool streaming_stores;                         // write dst with non-temporal stores (arrays far beyond cache)
+  bool threaded;                                 // share the runs among OpenMP threads
 };
 
 /// One lattice Boltzmann step on every node of `runs`:
