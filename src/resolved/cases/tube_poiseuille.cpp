@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/io/vtk_image.hpp"
@@ -169,6 +170,29 @@ int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, co
   return passed ? 0 : 1;
 }
 
+/// Rank 0 creates the run folder and writes units.txt, case.resolved.toml and opens log.txt; every rank learns
+/// whether that worked, so a refused folder stops all ranks with the same ConfigError (no rank left waiting).
+std::optional<common::RunFolder> open_run_folder(const common::CaseRequest& request, const common::UnitConverter& units,
+                                                 common::Log& log, int rank) {
+  std::optional<common::RunFolder> run;
+  std::string folder_error;
+  if (rank == 0) {
+    try {
+      run = request.output_dir ? common::RunFolder::create_exact(*request.output_dir)
+                               : common::RunFolder::create_new(request.case_dir / "runs");
+      log.open_file(run->file("log.txt"));
+      units.write(run->file("units.txt"));
+      request.config->write_resolved(run->file("case.resolved.toml"));
+    } catch (const common::ConfigError& e) {
+      folder_error = e.what();
+    }
+  }
+  int failed = folder_error.empty() ? 0 : 1;
+  MPI_Bcast(&failed, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (failed != 0) throw common::ConfigError(rank == 0 ? folder_error : "the run folder could not be created on rank 0");
+  return run;
+}
+
 }  // namespace
 
 int run_tube_poiseuille(const common::CaseRequest& request) {
@@ -178,15 +202,8 @@ int run_tube_poiseuille(const common::CaseRequest& request) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   const auto units = common::UnitConverter::from_relaxation_time(c.dx_m, c.collision.tau, c.kinematic_viscosity_m2_s,
                                                                  c.density_kg_m3);
-  std::optional<common::RunFolder> run;
   common::Log log(rank);
-  if (rank == 0) {
-    run = request.output_dir ? common::RunFolder::create_exact(*request.output_dir)
-                             : common::RunFolder::create_new(request.case_dir / "runs");
-    log.open_file(run->file("log.txt"));
-    units.write(run->file("units.txt"));
-    request.config->write_resolved(run->file("case.resolved.toml"));
-  }
+  const std::optional<common::RunFolder> run = open_run_folder(request, units, log, rank);
   const auto nodes = lattice_nodes(c);
   const double centre_lu = 0.5 * (nodes[0] - 1);
   const Vec3 origin_m{-centre_lu * c.dx_m, -centre_lu * c.dx_m, 0.0};
