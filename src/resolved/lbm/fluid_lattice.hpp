@@ -67,7 +67,8 @@ class FluidLattice {
 
   // ---- set-up, before initialize() ----
   /// Nodes outside `shape` become solid; links crossing its wall are closed by `rule`. `shape` is used during
-  /// initialize() only. The wall is at rest.
+  /// initialize() only. The wall is at rest. Nodes are classified at positions wrapped into the periodic box,
+  /// wall fractions q are found along unwrapped links: exact for shapes invariant along the periodic axes.
   void set_shape(const common::Shape& shape, const ShapePlacement& placement, WallRule rule);
   /// Velocity (lattice units) of the half-way bounce-back wall on a non-periodic face (axis, side 0/1).
   void set_face_wall_velocity(int axis, int side, const common::Vec3& u_lu);
