@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale bench lbm`: lattice Boltzmann kernel speed against the machine's memory-bandwidth roofline.
+#include "bench/lbm_bench.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "common/geometry/tube.hpp"
+#include "common/run_folder.hpp"
+#include "resolved/lbm/fluid_lattice.hpp"
+
+namespace hs::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kRepetitions = 5;   // median of 5 (>= 3 required)
+
+/// Bytes one node update moves, counted as STREAM counts its triad (each array element read or written once;
+/// write-allocate traffic not counted in either): 19 populations read (pull) + 19 written, 8 bytes each.
+/// Flags, wall links and halos are sparse or O(surface) and left out; the force field is off in these runs.
+constexpr double kBytesPerNodeUpdate = 2.0 * 19.0 * 8.0;
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+/// STREAM triad a = b + s c over arrays far larger than the caches; returns GB/s (24 bytes per element).
+double triad_bandwidth_GBs(std::size_t n, int threads) {
+  omp_set_num_threads(threads);
+  std::vector<double> a(n), b(n), c(n);
+  const auto len = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < len; ++i) {   // first touch by the thread that will use the page
+    a[static_cast<std::size_t>(i)] = 0.0;
+    b[static_cast<std::size_t>(i)] = 1.0;
+    c[static_cast<std::size_t>(i)] = 2.0;
+  }
+  std::vector<double> rates;
+  const double s = 3.0;
+  for (int r = 0; r < kRepetitions + 1; ++r) {
+    const auto t0 = Clock::now();
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < len; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      a[k] = b[k] + s * c[k];
+    }
+    const double sec = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (r > 0) rates.push_back(24.0 * static_cast<double>(n) / sec * 1e-9);   // first pass is warm-up
+  }
+  if (a[n / 2] != 7.0) std::fprintf(stderr, "triad check failed\n");
+  return median(rates);
+}
+
+struct Measured {
+  double mlups;
+  double fluid_nodes;
+};
+
+/// Runs `steps` steps `kRepetitions` times on `threads` threads; MLUPS counts fluid node updates.
+Measured measure(resolved::FluidLattice& lattice, int threads, long steps) {
+  omp_set_num_threads(threads);
+  double fluid = 0.0;
+  const auto& l = lattice.layout();
+  for (int z = 0; z < l.n[2]; ++z) {
+    for (int y = 0; y < l.n[1]; ++y) {
+      for (int x = 0; x < l.n[0]; ++x) fluid += lattice.is_fluid(x, y, z) ? 1.0 : 0.0;
+    }
+  }
+  lattice.run(2);   // warm-up
+  std::vector<double> rates;
+  for (int r = 0; r < kRepetitions; ++r) {
+    const auto t0 = Clock::now();
+    lattice.run(steps);
+    const double sec = std::chrono::duration<double>(Clock::now() - t0).count();
+    rates.push_back(fluid * static_cast<double>(steps) / sec * 1e-6);
+  }
+  lattice.check_health();
+  return {median(rates), fluid};
+}
+
+const resolved::CollisionParams kCollision{.model = resolved::CollisionModel::trt, .tau = 1.0,
+                                           .magic = resolved::trt_magic_default};
+
+std::unique_ptr<resolved::FluidLattice> periodic_box(int n, resolved::StoreMode mode = resolved::StoreMode::automatic) {
+  auto lattice = std::make_unique<resolved::FluidLattice>(
+      resolved::LatticeSpec{.global_nodes = {n, n, n}, .periodic = {true, true, true}, .collision = kCollision,
+                            .ranks_per_axis = {}, .rho0_lu = 1.0, .store_mode = mode},
+      MPI_COMM_SELF);
+  lattice->set_body_force({1e-6, 0.0, 0.0});
+  lattice->initialize();
+  return lattice;
+}
+
+/// The campaign tube (R = 25 um, L = 50 um) at dx = 0.5 um (resolved-methods.md section 5.2): R = 50 lattice
+/// spacings, 100 nodes long, periodic along z, Bouzidi walls.
+std::unique_ptr<resolved::FluidLattice> plasma_tube(double dx_um, const common::Tube& tube) {
+  const int length = static_cast<int>(50.0 / dx_um + 0.5);
+  const int width = static_cast<int>(2.0 * 25.0 / dx_um) + 4;
+  auto lattice = std::make_unique<resolved::FluidLattice>(
+      resolved::LatticeSpec{.global_nodes = {width, width, length}, .periodic = {false, false, true}, .collision = kCollision},
+      MPI_COMM_SELF);
+  const double c = 0.5 * (width - 1) * dx_um;
+  lattice->set_shape(tube, resolved::ShapePlacement{.origin = {-c, -c, 0.0}, .spacing = dx_um}, resolved::WallRule::bouzidi);
+  lattice->set_body_force({0.0, 0.0, 1e-6});
+  lattice->initialize();
+  return lattice;
+}
+
+}  // namespace
+
+int run_lbm_bench(const hs::common::TaskOptions& options) {
+  const std::size_t triad_n = options.quick ? (std::size_t{1} << 22) : (std::size_t{1} << 25);
+  const int box_n = options.quick ? 64 : 128;
+  const double dx_um = options.quick ? 1.0 : 0.5;
+  const long steps = options.quick ? 5 : 20;
+  const common::Tube tube(common::TubeSpec{.start_m = {0.0, 0.0, -1.0}, .end_m = {0.0, 0.0, 51.0}, .radius_m = 25.0});
+  nlohmann::json out;
+  nlohmann::json cases = nlohmann::json::object();
+  fmt::print("lbm bench: D3Q19 TRT + Guo, double, pull scheme, {} bytes per node update (19 loads + 19 stores; "
+             "streaming stores when the arrays exceed 256 MiB)\n",
+             kBytesPerNodeUpdate);
+  fmt::print("{:<22} {:>7} {:>12} {:>14} {:>12} {:>10}\n", "case", "threads", "triad GB/s", "roofline MLUPS",
+             "MLUPS", "fraction");
+  for (const int threads : {1, 2}) {
+    const double bw = triad_bandwidth_GBs(triad_n, threads);
+    const double roofline = bw * 1e9 / kBytesPerNodeUpdate * 1e-6;
+    auto box = periodic_box(box_n);
+    const Measured mb = measure(*box, threads, steps);
+    box.reset();
+    auto pipe = plasma_tube(dx_um, tube);
+    const Measured mt = measure(*pipe, threads, steps);
+    const std::string box_name = fmt::format("periodic_box_{}^3", box_n);
+    const std::string tube_name = fmt::format("tube_R25um_dx{}um", dx_um);
+    for (const auto& [name, m] : {std::pair{box_name, mb}, std::pair{tube_name, mt}}) {
+      fmt::print("{:<22} {:>7} {:>12.2f} {:>14.1f} {:>12.1f} {:>10.3f}\n", name, threads, bw, roofline, m.mlups,
+                 m.mlups / roofline);
+      cases[name][std::to_string(threads) + "_threads"] = {{"bandwidth_GBs", bw}, {"roofline_mlups", roofline},
+                                                          {"mlups", m.mlups}, {"roofline_fraction", m.mlups / roofline},
+                                                          {"fluid_nodes", m.fluid_nodes}};
+    }
+    if (threads == 2) {   // the same box with ordinary stores, to see what streaming stores buy on this machine
+      auto plain = periodic_box(box_n, resolved::StoreMode::ordinary);
+      const Measured mp = measure(*plain, threads, steps);
+      fmt::print("{:<22} {:>7} {:>12.2f} {:>14.1f} {:>12.1f} {:>10.3f}   (ordinary stores)\n", box_name, threads, bw,
+                 roofline, mp.mlups, mp.mlups / roofline);
+      cases[box_name + "_ordinary_stores"]["2_threads"] = {{"mlups", mp.mlups}, {"roofline_fraction", mp.mlups / roofline}};
+      out["bandwidth_GBs"] = bw;
+      out["roofline_mlups"] = roofline;
+      out["mlups"] = mb.mlups;
+      out["roofline_fraction"] = mb.mlups / roofline;
+    }
+  }
+  out["bytes_per_node_update"] = kBytesPerNodeUpdate;
+  out["top_level_case"] = fmt::format("periodic_box_{}^3, 2 threads", box_n);
+  out["repetitions"] = kRepetitions;
+  out["cases"] = cases;
+  out["provenance"] = common::provenance();
+  if (options.json_file) common::write_json(*options.json_file, out);
+  return 0;
+}
+
+}  // namespace hs::bench

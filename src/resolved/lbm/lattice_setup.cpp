@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// Set-up of the fluid lattice: node classification, fluid runs, wall links and open-boundary nodes.
+#include "resolved/lbm/fluid_lattice.hpp"
+
+namespace hs::resolved {
+
+common::Vec3 FluidLattice::shape_point(const std::array<int, 3>& g) const {
+  return placement_.origin + placement_.spacing * common::Vec3{static_cast<double>(g[0]), static_cast<double>(g[1]),
+                                                               static_cast<double>(g[2])};
+}
+
+/// Fluid, solid (shape or face wall) or open-boundary ghost, from the global node index. Periodic axes wrap.
+unsigned char FluidLattice::classify(const std::array<int, 3>& global) const {
+  std::array<int, 3> g = global;
+  int beyond_axis = -1;
+  int beyond_side = 0;
+  int beyond_count = 0;
+  const auto& n = spec_.global_nodes;
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (spec_.periodic[a]) {
+      g[a] = ((g[a] % n[a]) + n[a]) % n[a];
+    } else if (g[a] < 0 || g[a] >= n[a]) {
+      beyond_axis = static_cast<int>(a);
+      beyond_side = g[a] < 0 ? 0 : 1;
+      ++beyond_count;
+    }
+  }
+  const bool in_shape = shape_ == nullptr || shape_->signed_distance(shape_point(g)) < 0.0;
+  if (beyond_count > 1) return kFaceSolid;
+  if (beyond_count == 1) {
+    const auto a = static_cast<std::size_t>(beyond_axis);
+    if (!open_faces_[a][static_cast<std::size_t>(beyond_side)] || !in_shape) return kFaceSolid;
+    std::array<int, 3> inner = g;
+    inner[a] = beyond_side == 0 ? 0 : n[a] - 1;
+    return classify(inner) == kFluid ? kOpen : kFaceSolid;
+  }
+  return in_shape ? kFluid : kShapeSolid;
+}
+
+void FluidLattice::classify_nodes() {
+  flags_.assign(layout_.volume(), kFaceSolid);
+  for (std::size_t n = 0; n < layout_.volume(); ++n) flags_[n] = classify(global_of(static_cast<std::ptrdiff_t>(n)));
+}
+
+void FluidLattice::build_runs() {
+  runs_.clear();
+  fluid_nodes_ = 0;
+  for (int z = 0; z < layout_.n[2]; ++z) {
+    for (int y = 0; y < layout_.n[1]; ++y) {
+      int x = 0;
+      while (x < layout_.n[0]) {
+        while (x < layout_.n[0] && !is_fluid(x, y, z)) ++x;
+        const int start = x;
+        while (x < layout_.n[0] && is_fluid(x, y, z)) ++x;
+        if (x > start) runs_.push_back({index(start, y, z), x - start});
+        fluid_nodes_ += static_cast<std::size_t>(x - start);
+      }
+    }
+  }
+}
+
+void FluidLattice::build_wall_links() {
+  links_.clear();
+  const auto& off = decomposition_->offset();
+  for (int z = 0; z < layout_.n[2]; ++z) {
+    for (int y = 0; y < layout_.n[1]; ++y) {
+      for (int x = 0; x < layout_.n[0]; ++x) {
+        if (!is_fluid(x, y, z)) continue;
+        const std::ptrdiff_t node = index(x, y, z);
+        const std::array<int, 3> g{x + off[0], y + off[1], z + off[2]};
+        for (int i = 1; i < D3Q19::q; ++i) {
+          const auto& c = D3Q19::c[static_cast<std::size_t>(i)];
+          const std::ptrdiff_t target = node + offsets_[static_cast<std::size_t>(i)];
+          const unsigned char flag = flags_[static_cast<std::size_t>(target)];
+          if (flag == kFluid || flag == kOpen) continue;
+          const std::ptrdiff_t second = node - offsets_[static_cast<std::size_t>(i)];
+          const unsigned char second_flag = flags_[static_cast<std::size_t>(second)];
+          const bool second_usable = second_flag == kFluid || second_flag == kOpen;
+          double q = 0.5;
+          common::Vec3 u_wall;
+          if (flag == kShapeSolid && wall_rule_ == WallRule::bouzidi) {
+            const common::Vec3 p = shape_point(g);
+            const common::Vec3 step{static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
+            q = common::wall_crossing_fraction(*shape_, p, p + placement_.spacing * step);
+          } else if (flag == kFaceSolid) {
+            for (std::size_t a = 0; a < 3; ++a) {
+              const int ga = g[a] + c[a];
+              if (!spec_.periodic[a] && (ga < 0 || ga >= spec_.global_nodes[a])) {
+                u_wall = face_wall_velocity_[a][ga < 0 ? 0 : 1];
+                break;
+              }
+            }
+          }
+          links_.push_back(make_wall_link(node, target, second, second_usable, i, q, u_wall, spec_.rho0_lu));
+        }
+      }
+    }
+  }
+}
+
+void FluidLattice::build_open_nodes() {
+  open_nodes_.clear();
+  for (std::size_t a = 0; a < 3; ++a) {
+    for (std::size_t side = 0; side < 2; ++side) {
+      const auto& face = open_faces_[a][side];
+      if (!face || !decomposition_->on_global_face(static_cast<int>(a), static_cast<int>(side))) continue;
+      const std::size_t b = (a + 1) % 3;
+      const std::size_t c = (a + 2) % 3;
+      for (int j = -1; j <= layout_.n[b]; ++j) {
+        for (int k = -1; k <= layout_.n[c]; ++k) {
+          std::array<int, 3> ghost{};
+          ghost[a] = side == 0 ? -1 : layout_.n[a];
+          ghost[b] = j;
+          ghost[c] = k;
+          const std::ptrdiff_t gi = index(ghost[0], ghost[1], ghost[2]);
+          if (flags_[static_cast<std::size_t>(gi)] != kOpen) continue;
+          std::array<int, 3> inner = ghost;
+          inner[a] = side == 0 ? 0 : layout_.n[a] - 1;
+          const auto g = global_of(gi);
+          const common::Vec3 pos{static_cast<double>(g[0]), static_cast<double>(g[1]), static_cast<double>(g[2])};
+          open_nodes_.push_back(OpenNode{.ghost = gi,
+                                         .inner = index(inner[0], inner[1], inner[2]),
+                                         .velocity_given = face->velocity_given,
+                                         .u_lu = face->velocity_given ? face->profile(pos) : common::Vec3{},
+                                         .rho_lu = face->rho_lu});
+        }
+      }
+    }
+  }
+}
+
+}  // namespace hs::resolved
