@@ -2,10 +2,13 @@
 // The single list of benchmarks `hemoscale bench NAME` runs: one line per benchmark.
 #include "app/registry.hpp"
 
+namespace hs::resolved { int bench_npfem(const hs::common::TaskOptions& options); }
+
 namespace hs::app {
 
 std::map<std::string, TaskEntry> benchmarks() {
   std::map<std::string, TaskEntry> r;
+  r["npfem"] = {"npFEM membrane step at 258 and 642 vertices (us/step, us/iteration, factorisation)", hs::resolved::bench_npfem};
   return r;
 }
 
