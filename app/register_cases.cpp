@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The single list of case types `hemoscale run` knows: one line per case.
 #include "app/registry.hpp"
+#include "resolved/cases/stretching.hpp"
 #include "resolved/cases/tube_poiseuille.hpp"
 
 namespace hs::app {
@@ -8,6 +9,7 @@ namespace hs::app {
 std::map<std::string, Entry> case_types() {
   std::map<std::string, Entry> r;
   r["tube-poiseuille"] = {"plasma in a periodic tube, checked against Poiseuille", hs::resolved::run_tube_poiseuille};
+  r["stretching"] = {"optical-tweezers stretching of one RBC membrane vs Mills et al. 2004", hs::resolved::run_stretching};
   return r;
 }
 

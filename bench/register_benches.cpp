@@ -3,11 +3,14 @@
 #include "app/registry.hpp"
 #include "bench/lbm_bench.hpp"
 
+namespace hs::resolved { int bench_npfem(const hs::common::TaskOptions& options); }
+
 namespace hs::app {
 
 std::map<std::string, TaskEntry> benchmarks() {
   std::map<std::string, TaskEntry> r;
   r["lbm"] = {"lattice Boltzmann MLUPS vs the memory-bandwidth roofline (128^3 box, 50 um tube)", hs::bench::run_lbm_bench};
+  r["npfem"] = {"npFEM membrane step at 258 and 642 vertices (us/step, us/iteration, factorisation)", hs::resolved::bench_npfem};
   return r;
 }
 

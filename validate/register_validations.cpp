@@ -2,10 +2,13 @@
 // The single list of validations `hemoscale validate NAME` runs: one line per validation.
 #include "app/registry.hpp"
 
+namespace hs::resolved { int validate_stretching(const hs::common::TaskOptions& options); }
+
 namespace hs::app {
 
 std::map<std::string, TaskEntry> validations() {
   std::map<std::string, TaskEntry> r;
+  r["stretching"] = {"RBC optical-tweezers stretching vs Mills et al. 2004 (13 forces, 258 + 642 vertices)", hs::resolved::validate_stretching};
   return r;
 }
 

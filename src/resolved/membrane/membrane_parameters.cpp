@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// Reading [membrane]: mesh choice, material moduli and npFEM settings, all checked.
+#include "resolved/membrane/membrane_parameters.hpp"
+
+#include <fmt/format.h>
+
+#include "resolved/membrane/mesh_io.hpp"
+#include "resolved/membrane/mesh_quality.hpp"
+
+namespace hs::resolved {
+namespace {
+
+MembraneParameters parse_material(hs::common::ConfigSection& s) {
+  const MembraneParameters d;
+  MembraneParameters p;
+  p.shear_modulus_N_m = s.positive_or("shear_modulus_N_m", d.shear_modulus_N_m);
+  p.strain_hardening_ratio = s.non_negative_or("strain_hardening_ratio", d.strain_hardening_ratio);
+  p.area_modulus_N_m = s.positive_or("area_modulus_N_m", d.area_modulus_N_m);
+  p.global_area_modulus_N_m = s.non_negative_or("global_area_modulus_N_m", d.global_area_modulus_N_m);
+  p.bending_modulus_J = s.positive_or("bending_modulus_J", d.bending_modulus_J);
+  p.volume_modulus_Pa = s.positive_or("volume_modulus_Pa", d.volume_modulus_Pa);
+  p.density_kg_m3 = s.positive_or("density_kg_m3", d.density_kg_m3);
+  p.rayleigh_beta_s = s.non_negative_or("rayleigh_beta_s", d.rayleigh_beta_s);
+  p.viscoelastic_relaxation = s.number_in_or("viscoelastic_relaxation", 0.0, 1.0, d.viscoelastic_relaxation);
+  return p;
+}
+
+NpfemSettings parse_solver(hs::common::ConfigSection& s) {
+  const NpfemSettings d;
+  NpfemSettings n;
+  const std::string it = s.one_of_or("iteration", {"lbfgs", "projective_dynamics"}, "lbfgs");
+  n.iteration = it == "lbfgs" ? NpfemIteration::lbfgs : NpfemIteration::projective_dynamics;
+  n.lbfgs_history = static_cast<int>(s.integer_in_or("lbfgs_history", 1, 50, d.lbfgs_history));
+  n.max_iterations = static_cast<int>(s.integer_in_or("max_iterations", 1, 100000, d.max_iterations));
+  n.gradient_tolerance = s.positive_or("gradient_tolerance", d.gradient_tolerance);
+  n.line_search_halvings = static_cast<int>(s.integer_in_or("line_search_halvings", 0, 30, d.line_search_halvings));
+  return n;
+}
+
+}  // namespace
+
+MembraneConfig parse_membrane_config(hs::common::ConfigSection& section) {
+  MembraneConfig c;
+  section.forbid_together("mesh_file", "vertices", "the mesh is either read from a file or generated");
+  if (section.has("mesh_file")) {
+    c.mesh_file = section.file_path("mesh_file");
+    c.mesh_file_length_unit_m = section.positive_or("mesh_file_length_unit_m", 1.0);
+  } else {
+    c.mesh.vertex_count = static_cast<int>(section.integer_in_or("vertices", 18, 70000, c.mesh.vertex_count));
+    if (!is_supported_vertex_count(c.mesh.vertex_count)) {
+      section.fail("vertices", "must be 4*4^k+2 (octahedron: 66, 258, 1026) or 10*4^k+2 (icosahedron: 162, 642, 2562)");
+    }
+    c.mesh.diameter_m = section.positive_or("diameter_m", c.mesh.diameter_m);
+    c.mesh.relax_iterations = static_cast<int>(section.integer_in_or("relax_iterations", 0, 10000, c.mesh.relax_iterations));
+  }
+  c.material = parse_material(section);
+  c.solver = parse_solver(section);
+  return c;
+}
+
+TriangleMesh build_membrane_mesh(const MembraneConfig& config) {
+  if (config.mesh_file) {
+    TriangleMesh mesh = read_mesh_obj(*config.mesh_file, config.mesh_file_length_unit_m);
+    validate_mesh(mesh, config.mesh_file->string());
+    return mesh;
+  }
+  TriangleMesh mesh = make_rbc_mesh(config.mesh);
+  validate_mesh(mesh, fmt::format("generated RBC mesh ({} vertices)", config.mesh.vertex_count));
+  return mesh;
+}
+
+}  // namespace hs::resolved

@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: MIT
+// npFEM solver: set-up (units, masses, the once-factorised proxy), the time step and the SI interface.
+#include "resolved/membrane/npfem_solver.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+
+namespace hs::resolved {
+namespace {
+
+using hs::common::Vec3;
+
+// Internal units (Palabos-npFEM, reference §1.3): length um, time us, mass fg => force pN, energy pN um.
+constexpr double um_per_m = 1e6;
+constexpr double us_per_s = 1e6;
+constexpr double pN_per_N = 1e12;
+constexpr double pN_um_per_J = 1e18;
+constexpr double pN_um_per_N_m = 1e6;   // N/m -> pN/um
+
+Positions to_positions(const std::vector<Vec3>& v, double scale) {
+  Positions p(static_cast<Eigen::Index>(v.size()), 3);
+  for (std::size_t i = 0; i < v.size(); ++i) p.row(static_cast<Eigen::Index>(i)) << v[i].x * scale, v[i].y * scale, v[i].z * scale;
+  return p;
+}
+
+std::vector<Vec3> to_vec3(const Positions& p, double scale) {
+  std::vector<Vec3> v(static_cast<std::size_t>(p.rows()));
+  for (Eigen::Index i = 0; i < p.rows(); ++i) v[static_cast<std::size_t>(i)] = Vec3{p(i, 0), p(i, 1), p(i, 2)} * scale;
+  return v;
+}
+
+EnergyModuli internal_moduli(const MembraneParameters& m) {
+  const double lambda = 4.0 * m.shear_modulus_N_m * pN_um_per_N_m;   // small-strain G_s = lambda / 4
+  return {.skalak_lambda_pN_um = lambda,
+          .hardening_mu_pN_um = m.strain_hardening_ratio * lambda,
+          .area_weight_pN_um = 2.0 * m.area_modulus_N_m * pN_um_per_N_m,
+          .bending_pN_um = m.bending_modulus_J * pN_um_per_J,
+          .volume_modulus_pN_um2 = m.volume_modulus_Pa,   // 1 Pa = 1 pN/um^2
+          .global_area_pN_um = m.global_area_modulus_N_m * pN_um_per_N_m};
+}
+
+double dot(const Positions& a, const Positions& b) { return (a.array() * b.array()).sum(); }
+
+}  // namespace
+
+NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters& material,
+                         const NpfemSettings& settings, double time_step_s)
+    : settings_(settings), material_(material), h_us_(time_step_s * us_per_s) {
+  if (!(time_step_s > 0.0)) throw hs::common::ConfigError(fmt::format("npFEM time_step_s = {} must be > 0", time_step_s));
+  x_um_ = to_positions(rest_mesh.vertices_m, um_per_m);
+  const Eigen::RowVector3d c = x_um_.colwise().mean();
+  energy_ = std::make_unique<MembraneEnergy>(Positions(x_um_.rowwise() - c), rest_mesh.triangles, internal_moduli(material));
+  const int n = vertex_count();
+  v_um_us_.setZero(n, 3);
+  f_ext_pN_.setZero(n, 3);
+  mass_fg_ = material.density_kg_m3 * energy_->rest_volume() / n;   // 1 kg/m^3 = 1 fg/um^3
+  double edge_sum = 0.0;
+  double edge_max = 0.0;
+  const auto edges = mesh_edges(rest_mesh);
+  for (const auto& e : edges) {
+    const double len = (x_um_.row(e[0]) - x_um_.row(e[1])).norm();
+    edge_sum += len;
+    edge_max = std::max(edge_max, len);
+  }
+  force_scale_pN_ = material.shear_modulus_N_m * pN_um_per_N_m * edge_sum / static_cast<double>(edges.size());
+  max_edge_um_ = 20.0 * edge_max;
+
+  const auto start = std::chrono::steady_clock::now();
+  const Eigen::SparseMatrix<double> l = energy_->stiffness_proxy();
+  Eigen::SparseMatrix<double> identity(n, n);
+  identity.setIdentity();
+  damped_mass_ = mass_fg_ * identity + (h_us_ * material.rayleigh_beta_s * us_per_s) * l;
+  damped_mass_solver_.compute(damped_mass_);
+  const Eigen::SparseMatrix<double> h0 = damped_mass_ / (h_us_ * h_us_) + l;
+  proxy_.compute(h0);
+  if (proxy_.info() != Eigen::Success || damped_mass_solver_.info() != Eigen::Success) {
+    throw hs::common::NumericalError("npFEM: the Hessian proxy is not positive definite (check the mesh and moduli)");
+  }
+  // Rank-2 Woodbury correction for the global volume and area energies, from their rest gradients.
+  Positions gv, ga;
+  energy_->volume_area_gradients(Positions(x_um_.rowwise() - c), gv, ga);
+  const EnergyModuli& k = energy_->moduli();
+  const double coef[2] = {k.volume_modulus_pN_um2 / energy_->rest_volume(), k.global_area_pN_um / energy_->rest_area()};
+  const Positions* grads[2] = {&gv, &ga};
+  Eigen::Matrix2d core = Eigen::Matrix2d::Zero();
+  for (int j = 0; j < 2; ++j) {
+    if (coef[j] <= 0.0) continue;
+    woodbury_u_[woodbury_rank_] = *grads[j];
+    woodbury_z_[woodbury_rank_] = proxy_.solve(*grads[j]);
+    core(woodbury_rank_, woodbury_rank_) = 1.0 / coef[j];
+    ++woodbury_rank_;
+  }
+  for (int a = 0; a < woodbury_rank_; ++a)
+    for (int b = 0; b < woodbury_rank_; ++b) core(a, b) += dot(woodbury_u_[a], woodbury_z_[b]);
+  woodbury_core_inv_ = Eigen::Matrix2d::Identity();
+  if (woodbury_rank_ > 0) woodbury_core_inv_.topLeftCorner(woodbury_rank_, woodbury_rank_) =
+      core.topLeftCorner(woodbury_rank_, woodbury_rank_).inverse();
+  stats_.factorisation_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+NpfemSolver::~NpfemSolver() = default;
+
+Positions NpfemSolver::apply_inverse_proxy(const Positions& g) const {
+  Positions r = proxy_.solve(g);
+  if (woodbury_rank_ == 0) return r;
+  Eigen::Vector2d ut = Eigen::Vector2d::Zero();
+  for (int a = 0; a < woodbury_rank_; ++a) ut[a] = dot(woodbury_u_[a], r);
+  const Eigen::Vector2d coef = woodbury_core_inv_ * ut;
+  for (int a = 0; a < woodbury_rank_; ++a) r -= coef[a] * woodbury_z_[a];
+  return r;
+}
+
+double NpfemSolver::objective(const Positions& x, const Positions& y, Positions& gradient) {
+  const double e = energy_->evaluate(x, gradient);
+  const Positions d = x - y;
+  const Positions md = damped_mass_ * d;
+  gradient += md / (h_us_ * h_us_);
+  return e + 0.5 * dot(d, md) / (h_us_ * h_us_);
+}
+
+double NpfemSolver::max_row_norm(const Positions& g) const { return g.rowwise().norm().maxCoeff(); }
+
+void NpfemSolver::set_external_forces_N(std::span<const Vec3> forces_N) {
+  if (static_cast<int>(forces_N.size()) != vertex_count()) {
+    throw std::invalid_argument(fmt::format("npFEM: {} external forces given for {} vertices", forces_N.size(), vertex_count()));
+  }
+  for (int i = 0; i < vertex_count(); ++i) {
+    if (!std::isfinite(forces_N[i].x) || !std::isfinite(forces_N[i].y) || !std::isfinite(forces_N[i].z)) {
+      throw hs::common::NumericalError(fmt::format("npFEM: the external force on vertex {} is not finite ({}, {}, {}) N",
+                                                   i, forces_N[i].x, forces_N[i].y, forces_N[i].z));
+    }
+    f_ext_pN_.row(i) << forces_N[i].x * pN_per_N, forces_N[i].y * pN_per_N, forces_N[i].z * pN_per_N;
+  }
+}
+
+void NpfemSolver::clear_external_forces() { f_ext_pN_.setZero(); }
+
+NpfemStepReport NpfemSolver::step() {
+  const Eigen::RowVector3d c = x_um_.colwise().mean();   // work about the centroid (conditioning)
+  const Positions xn = x_um_.rowwise() - c;
+  const Positions rhs = mass_fg_ * v_um_us_ + h_us_ * f_ext_pN_;
+  const Positions y = xn + h_us_ * Positions(damped_mass_solver_.solve(rhs));
+  Positions gx, gy;
+  Positions x = objective(xn, y, gx) <= objective(y, y, gy) ? xn : y;   // the better start of the two
+  const NpfemStepReport report =
+      settings_.iteration == NpfemIteration::lbfgs ? minimise(x, y) : projective_dynamics(x, y);
+  Positions v = (x - xn) / h_us_;
+  relax_velocity(v, x);
+  x = xn + h_us_ * v;
+  check_state(x, v);
+  x_um_ = x.rowwise() + c;
+  v_um_us_ = v;
+  apply_center_constraint();
+  ++stats_.steps;
+  stats_.iterations += report.iterations;
+  if (!report.converged) ++stats_.unconverged_steps;
+  return report;
+}
+
+void NpfemSolver::relax_velocity(Positions& v, const Positions& x) const {
+  const double c_alpha = material_.viscoelastic_relaxation;
+  if (c_alpha <= 0.0) return;
+  const Eigen::RowVector3d xc = x.colwise().mean();
+  const Eigen::RowVector3d vc = v.colwise().mean();   // equal lumped masses
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+  for (int i = 0; i < vertex_count(); ++i) {
+    const Eigen::Vector3d r = (x.row(i) - xc).transpose();
+    inertia += r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose();
+    momentum += r.cross(v.row(i).transpose());
+  }
+  const Eigen::Vector3d omega = inertia.ldlt().solve(momentum);
+  for (int i = 0; i < vertex_count(); ++i) {
+    const Eigen::Vector3d r = (x.row(i) - xc).transpose();
+    const Eigen::RowVector3d rigid = vc + omega.cross(r).transpose();
+    v.row(i) += c_alpha * (rigid - v.row(i));
+  }
+}
+
+void NpfemSolver::check_state(const Positions& x, const Positions& v) const {
+  const bool finite = x.allFinite() && v.allFinite();
+  double longest = 0.0;
+  if (finite) {
+    for (const auto& t : triangles()) {
+      for (int k = 0; k < 3; ++k) longest = std::max(longest, (x.row(t[k]) - x.row(t[(k + 1) % 3])).norm());
+    }
+  }
+  if (!finite || longest > max_edge_um_) {
+    throw hs::common::NumericalError(fmt::format(
+        "npFEM: membrane solve diverged at step {} ({}; longest edge {:.3g} um, limit {:.3g} um); the state is kept "
+        "at the previous step. Reduce the time step or the external forces, or check the moduli",
+        stats_.steps + 1, finite ? "edge blow-up" : "non-finite positions", longest, max_edge_um_));
+  }
+}
+
+void NpfemSolver::set_center_constraint(CenterConstraint constraint, Vec3 axis) {
+  center_constraint_ = constraint;
+  center_target_um_ = x_um_.colwise().mean().transpose();
+  center_axis_ = Eigen::Vector3d(axis.x, axis.y, axis.z).normalized();
+}
+
+void NpfemSolver::apply_center_constraint() {
+  if (center_constraint_ == CenterConstraint::free) return;
+  Eigen::Vector3d dx = x_um_.colwise().mean().transpose() - center_target_um_;
+  Eigen::Vector3d dv = v_um_us_.colwise().mean().transpose();
+  if (center_constraint_ == CenterConstraint::axis) {
+    dx -= dx.dot(center_axis_) * center_axis_;
+    dv -= dv.dot(center_axis_) * center_axis_;
+  }
+  x_um_.rowwise() -= dx.transpose();
+  v_um_us_.rowwise() -= dv.transpose();
+}
+
+void NpfemSolver::translate_m(const Vec3& shift_m) {
+  x_um_.rowwise() += Eigen::RowVector3d(shift_m.x, shift_m.y, shift_m.z) * um_per_m;
+  center_target_um_ += Eigen::Vector3d(shift_m.x, shift_m.y, shift_m.z) * um_per_m;
+}
+
+std::vector<Vec3> NpfemSolver::positions_m() const { return to_vec3(x_um_, 1.0 / um_per_m); }
+std::vector<Vec3> NpfemSolver::velocities_m_s() const { return to_vec3(v_um_us_, 1.0); }   // 1 um/us = 1 m/s
+TriangleMesh NpfemSolver::current_mesh() const { return {positions_m(), triangles()}; }
+std::vector<Vec3> NpfemSolver::vertex_normals() const { return hs::resolved::vertex_normals(current_mesh()); }
+std::vector<double> NpfemSolver::vertex_areas_m2() const { return hs::resolved::vertex_areas_m2(current_mesh()); }
+Vec3 NpfemSolver::centroid_m() const {
+  const Eigen::RowVector3d c = x_um_.colwise().mean() / um_per_m;
+  return {c[0], c[1], c[2]};
+}
+double NpfemSolver::area_m2() const { return energy_->area(x_um_) * 1e-12; }
+double NpfemSolver::volume_m3() const {
+  return energy_->volume(Positions(x_um_.rowwise() - x_um_.colwise().mean())) * 1e-18;
+}
+double NpfemSolver::rest_area_m2() const { return energy_->rest_area() * 1e-12; }
+double NpfemSolver::rest_volume_m3() const { return energy_->rest_volume() * 1e-18; }
+double NpfemSolver::vertex_mass_kg() const { return mass_fg_ * 1e-18; }
+
+}  // namespace hs::resolved

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+// The nodal projective FEM (npFEM) membrane solver of Kotsalos, Latt & Chopard (JCP 398:108905, 2019).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/SparseCholesky>
+
+#include "common/vec3.hpp"
+#include "resolved/membrane/membrane_energy.hpp"
+#include "resolved/membrane/membrane_parameters.hpp"
+#include "resolved/membrane/triangle_mesh.hpp"
+
+namespace hs::resolved {
+
+/// How the centre of mass is held (for drag and lift runs of the coupling, reference §5.2).
+enum class CenterConstraint { free, fixed, axis };
+
+/// What one step did: iterations of the minimisation, the final residual and why it stopped.
+struct NpfemStepReport {
+  int iterations = 0;
+  double gradient_max_N = 0.0;   // max over vertices of |grad g| at the end (SI)
+  bool converged = false;
+  int stagnations = 0;           // line searches that hit the halving limit
+  std::string stop_reason;       // "gradient", "objective", "max_iterations", "line_search"
+};
+
+/// Running totals for logs and benchmarks.
+struct NpfemStatistics {
+  long steps = 0;
+  long iterations = 0;
+  long unconverged_steps = 0;
+  double factorisation_s = 0.0;  // wall time of the one-time sparse Cholesky factorisations
+};
+
+/// One membrane. Implicit Euler as the minimisation g(x) = |x - y|^2_{M~}/(2 h^2) + E(x) (reference §3.1), with
+/// M~ = M + h beta L (stiffness-proportional Rayleigh damping), solved by L-BFGS (Liu et al. 2017) preconditioned by
+/// the constant proxy H0 = M~/h^2 + L (+ a rank-2 Woodbury term for the global volume and area energies), factorised
+/// once; or by the plain projective-dynamics local/global iteration x <- x - H0^-1 grad g (which, for the PD terms,
+/// is exactly Bouaziz et al. 2014's global solve after the local projections). After convergence the velocity is
+/// relaxed towards the rigid-body motion by C_alpha (viscoelasticity, reference §3.3 step 6).
+/// Interface in SI; internally um, us, fg (force pN), as Palabos-npFEM.
+class NpfemSolver {
+ public:
+  NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters& material, const NpfemSettings& settings,
+              double time_step_s);
+  ~NpfemSolver();
+  NpfemSolver(const NpfemSolver&) = delete;
+  NpfemSolver& operator=(const NpfemSolver&) = delete;
+
+  /// External force per vertex in newtons, held until changed (the coupling sets it before every step).
+  /// A non-finite force throws NumericalError naming the vertex.
+  void set_external_forces_N(std::span<const hs::common::Vec3> forces_N);
+  void clear_external_forces();
+  /// One implicit step of length time_step_s. Throws NumericalError if the solve diverges (non-finite values,
+  /// or an edge stretched beyond 20x its rest length); the state is then left at the previous step.
+  NpfemStepReport step();
+
+  /// Holds the centre of mass where it is now (fixed), or lets it move only along `axis` (axis).
+  void set_center_constraint(CenterConstraint constraint, hs::common::Vec3 axis = {1.0, 0.0, 0.0});
+  /// Moves the whole cell rigidly (placing it in a domain).
+  void translate_m(const hs::common::Vec3& shift_m);
+
+  [[nodiscard]] int vertex_count() const { return static_cast<int>(x_um_.rows()); }
+  [[nodiscard]] const std::vector<std::array<int, 3>>& triangles() const { return energy_->triangles(); }
+  [[nodiscard]] std::vector<hs::common::Vec3> positions_m() const;
+  [[nodiscard]] std::vector<hs::common::Vec3> velocities_m_s() const;
+  [[nodiscard]] TriangleMesh current_mesh() const;
+  [[nodiscard]] std::vector<hs::common::Vec3> vertex_normals() const;
+  [[nodiscard]] std::vector<double> vertex_areas_m2() const;
+  [[nodiscard]] hs::common::Vec3 centroid_m() const;
+  [[nodiscard]] double area_m2() const;
+  [[nodiscard]] double volume_m3() const;
+  [[nodiscard]] double rest_area_m2() const;
+  [[nodiscard]] double rest_volume_m3() const;
+  [[nodiscard]] double vertex_mass_kg() const;
+  [[nodiscard]] double time_step_s() const { return h_us_ * 1e-6; }
+  [[nodiscard]] const NpfemStatistics& statistics() const { return stats_; }
+
+ private:
+  double objective(const Positions& x, const Positions& y, Positions& gradient);
+  Positions apply_inverse_proxy(const Positions& g) const;
+  NpfemStepReport minimise(Positions& x, const Positions& y);
+  NpfemStepReport projective_dynamics(Positions& x, const Positions& y);
+  void relax_velocity(Positions& v, const Positions& x) const;
+  void apply_center_constraint();
+  void check_state(const Positions& x, const Positions& v) const;
+  [[nodiscard]] double max_row_norm(const Positions& g) const;
+
+  std::unique_ptr<MembraneEnergy> energy_;
+  NpfemSettings settings_;
+  MembraneParameters material_;
+  double h_us_;
+  double mass_fg_;
+  double force_scale_pN_;                       // G_s * mean rest edge: the elastic force of one vertex
+  double max_edge_um_;                          // 20 x the longest rest edge: beyond it the solve has diverged
+  Eigen::SparseMatrix<double> damped_mass_;     // M~ = M + h beta L  (fg)
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> proxy_;        // H0 = M~/h^2 + L
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> damped_mass_solver_;
+  Positions woodbury_u_[2];                     // rest gradients of V and A (rank-2 global proxy)
+  Positions woodbury_z_[2];                     // H0^-1 u
+  Eigen::Matrix2d woodbury_core_inv_;
+  int woodbury_rank_ = 0;
+  Positions x_um_;
+  Positions v_um_us_;
+  Positions f_ext_pN_;
+  CenterConstraint center_constraint_ = CenterConstraint::free;
+  Eigen::Vector3d center_target_um_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d center_axis_ = Eigen::Vector3d::UnitX();
+  NpfemStatistics stats_;
+};
+
+}  // namespace hs::resolved

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// Bad meshes and bad [membrane] values are ConfigErrors (exit code 2) with a message that says what is wrong.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+
+#include "common/config/config_file.hpp"
+#include "common/errors.hpp"
+#include "resolved/membrane/membrane_parameters.hpp"
+#include "resolved/membrane/mesh_quality.hpp"
+#include "resolved/membrane/rbc_mesh_generator.hpp"
+
+using namespace hs::resolved;
+using hs::common::ConfigError;
+
+namespace {
+
+std::string validation_error(const TriangleMesh& m) {
+  try {
+    validate_mesh(m, "cell.obj");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string config_error(const std::string& toml) {
+  try {
+    auto f = hs::common::ConfigFile::parse(toml, "case.toml");
+    auto s = f->root().section("membrane");
+    (void)parse_membrane_config(s);
+    f->finish();
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(BadMesh, OpenSurfaceIsRejected) {
+  TriangleMesh m = make_rbc_mesh({.vertex_count = 66});
+  m.triangles.pop_back();
+  EXPECT_NE(validation_error(m).find("open surface"), std::string::npos) << validation_error(m);
+}
+
+TEST(BadMesh, NonManifoldEdgeIsRejected) {
+  TriangleMesh m = make_rbc_mesh({.vertex_count = 66});
+  const auto t = m.triangles[0];
+  m.vertices_m.push_back({0.0, 0.0, 5e-6});
+  m.triangles.push_back({t[1], t[0], m.vertex_count() - 1});   // a third triangle on edge (t0, t1)
+  EXPECT_NE(validation_error(m).find("non-manifold"), std::string::npos) << validation_error(m);
+}
+
+TEST(BadMesh, InvertedTrianglesAreRejected) {
+  TriangleMesh one = make_rbc_mesh({.vertex_count = 66});
+  std::swap(one.triangles[3][1], one.triangles[3][2]);
+  EXPECT_NE(validation_error(one).find("inverted"), std::string::npos) << validation_error(one);
+  TriangleMesh all = make_rbc_mesh({.vertex_count = 66});
+  for (auto& t : all.triangles) std::swap(t[1], t[2]);
+  EXPECT_NE(validation_error(all).find("inverted mesh"), std::string::npos) << validation_error(all);
+}
+
+TEST(BadMesh, DegenerateAndOutOfRangeIndicesAreRejected) {
+  TriangleMesh m = make_rbc_mesh({.vertex_count = 66});
+  m.triangles[0][0] = 999;
+  EXPECT_NE(validation_error(m).find("refers to vertex 999"), std::string::npos);
+  TriangleMesh d = make_rbc_mesh({.vertex_count = 66});
+  d.vertices_m[d.triangles[0][1]] = d.vertices_m[d.triangles[0][0]];
+  EXPECT_FALSE(validation_error(d).empty());
+}
+
+TEST(BadMembraneConfig, NonPositiveModuliNameTheKey) {
+  EXPECT_NE(config_error("[membrane]\nshear_modulus_N_m = 0.0\n").find("shear_modulus_N_m"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nshear_modulus_N_m = -5e-6\n").find("shear_modulus_N_m"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nbending_modulus_J = 0\n").find("bending_modulus_J"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\narea_modulus_N_m = -1\n").find("area_modulus_N_m"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nvolume_modulus_Pa = 0\n").find("volume_modulus_Pa"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nvertices = 100\n").find("vertices"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nshear_modulus = 5e-6\n").find("shear_modulus"), std::string::npos);   // typo
+  EXPECT_EQ(config_error("[membrane]\nshear_modulus_N_m = 4e-6\nvertices = 642\n"), "");
+}
