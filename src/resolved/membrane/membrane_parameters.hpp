@@ -50,6 +50,11 @@ struct NpfemSettings {
   /// Stop when max_v |grad g|_v <= tolerance * G_s * mean rest edge (the elastic force scale of one vertex).
   double gradient_tolerance = 1.0e-4;
   int line_search_halvings = 5;                         // Palabos-npFEM: alpha = 1, 1/2, ..., 1/32
+  /// Weight of the local-area term in the Hessian proxy, as a fraction of its energy weight. The PD proxy w D D^T
+  /// is stiff in every in-plane direction, while the area energy only resists area change, so at full weight it
+  /// over-damps the soft shear modes; 0.3 measured 40% fewer L-BFGS iterations per step on a loaded 258-vertex cell
+  /// (bench npfem). It changes only the preconditioner, never the minimiser (nor the Rayleigh damping matrix).
+  double area_proxy_fraction = 0.3;
 };
 
 /// Everything the [membrane] section describes: mesh, material, solver.
