@@ -187,9 +187,10 @@ double MembraneEnergy::area(const Positions& x) const {
   return 0.5 * a;
 }
 
-Eigen::SparseMatrix<double> MembraneEnergy::stiffness_proxy() const {
+Eigen::SparseMatrix<double> MembraneEnergy::stiffness_proxy(double area_fraction) const {
   std::vector<Eigen::Triplet<double>> trip;
-  const double w_tri = 0.5 * (moduli_.skalak_lambda_pN_um + moduli_.hardening_mu_pN_um) + moduli_.area_weight_pN_um;
+  const double w_tri =
+      0.5 * (moduli_.skalak_lambda_pN_um + moduli_.hardening_mu_pN_um) + area_fraction * moduli_.area_weight_pN_um;
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     Eigen::Matrix<double, 3, 2> d;   // vertex weights of the two columns of F
     d << -1.0, -1.0, 1.0, 0.0, 0.0, 1.0;

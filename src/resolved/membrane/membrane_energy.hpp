@@ -39,8 +39,9 @@ class MembraneEnergy {
   /// Returns E(x) in pN um and writes dE/dx (pN) into `gradient` (resized to x's shape).
   double evaluate(const Positions& x, Positions& gradient);
   /// L = sum_c w_c A_c^T A_c (n x n, same for x, y, z): the PD Laplacian of the triangle and bending terms,
-  /// with the hyperelastic term at weight (lambda + mu)/2. Used for the Hessian proxy and Rayleigh damping.
-  [[nodiscard]] Eigen::SparseMatrix<double> stiffness_proxy() const;
+  /// with the hyperelastic term at weight (lambda + mu)/2 and the area term at `area_fraction` of its weight
+  /// (1 for the Rayleigh damping matrix; less for the Hessian proxy, see NpfemSettings::area_proxy_fraction).
+  [[nodiscard]] Eigen::SparseMatrix<double> stiffness_proxy(double area_fraction = 1.0) const;
 
   [[nodiscard]] double volume(const Positions& x) const;
   [[nodiscard]] double area(const Positions& x) const;

@@ -34,6 +34,7 @@ NpfemSettings parse_solver(hs::common::ConfigSection& s) {
   n.max_iterations = static_cast<int>(s.integer_in_or("max_iterations", 1, 100000, d.max_iterations));
   n.gradient_tolerance = s.positive_or("gradient_tolerance", d.gradient_tolerance);
   n.line_search_halvings = static_cast<int>(s.integer_in_or("line_search_halvings", 0, 30, d.line_search_halvings));
+  n.area_proxy_fraction = s.number_in_or("area_proxy_fraction", 0.01, 1.0, d.area_proxy_fraction);
   return n;
 }
 

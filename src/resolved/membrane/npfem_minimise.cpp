@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -38,7 +40,52 @@ bool objective_stalled(std::deque<double>& history, double value) {
   return *hi - *lo <= objective_rel_tol * std::max(1.0, std::abs(value));
 }
 
+/// The last m (s, y) pairs of L-BFGS and the two-loop recursion (Nocedal & Wright 2006, Alg. 7.4) with the
+/// prefactored proxy as the initial inverse Hessian (Liu et al. 2017).
+class LbfgsHistory {
+ public:
+  explicit LbfgsHistory(int m) : m_(m) {}
+  void clear() { s_.clear(), y_.clear(), rho_.clear(); }
+  [[nodiscard]] bool empty() const { return s_.empty(); }
+  /// Keeps the pair only if its curvature s.y is positive (otherwise the update would not be positive definite).
+  void push(Positions s, Positions y) {
+    const double sy = dot(s, y);
+    if (!(sy > 1e-16 * std::sqrt(dot(s, s) * dot(y, y)))) return;
+    s_.push_back(std::move(s)), y_.push_back(std::move(y)), rho_.push_back(1.0 / sy);
+    if (static_cast<int>(s_.size()) > m_) s_.pop_front(), y_.pop_front(), rho_.pop_front();
+  }
+  template <typename InverseProxy>
+  [[nodiscard]] Positions direction(const Positions& g, const InverseProxy& apply_h0_inverse) const {
+    Positions q = g;
+    std::vector<double> alpha(s_.size());
+    for (int k = static_cast<int>(s_.size()) - 1; k >= 0; --k) {
+      alpha[k] = rho_[k] * dot(s_[k], q);
+      q -= alpha[k] * y_[k];
+    }
+    Positions r = apply_h0_inverse(q);
+    for (std::size_t k = 0; k < s_.size(); ++k) r += (alpha[k] - rho_[k] * dot(y_[k], r)) * s_[k];
+    return -r;
+  }
+
+ private:
+  int m_;
+  std::deque<Positions> s_, y_;
+  std::deque<double> rho_;
+};
+
 }  // namespace
+
+NpfemSolver::LineSearchResult NpfemSolver::line_search(const Positions& x, const Positions& d, const Positions& y,
+                                                       double fx, double gd, Positions& xt, Positions& gt) {
+  double step = 1.0;
+  double ft = 0.0;
+  for (int j = 0; j <= settings_.line_search_halvings; ++j, step *= 0.5) {
+    xt = x + step * d;
+    ft = objective(xt, y, gt);
+    if (std::isfinite(ft) && ft <= fx + armijo_c1 * step * gd && dot(gt, d) >= curvature_c2 * gd) return {ft, true};
+  }
+  return {ft, false};
+}
 
 NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y) {
   NpfemStepReport report;
@@ -46,8 +93,8 @@ NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y) {
   Positions g, gt, xt;
   double fx = objective(x, y, g);
   require_finite(fx, 0);
-  std::deque<Positions> s_hist, y_hist;
-  std::deque<double> rho_hist, f_hist;
+  LbfgsHistory history(settings_.lbfgs_history);
+  std::deque<double> f_hist;
   report.stop_reason = "max_iterations";
   while (true) {
     if (max_row_norm(g) <= tol) {
@@ -56,58 +103,31 @@ NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y) {
       break;
     }
     if (report.iterations >= settings_.max_iterations) break;
-    // Two-loop recursion with H0^-1 as the initial inverse Hessian.
-    Positions q = g;
-    std::vector<double> alpha(s_hist.size());
-    for (int k = static_cast<int>(s_hist.size()) - 1; k >= 0; --k) {
-      alpha[k] = rho_hist[k] * dot(s_hist[k], q);
-      q -= alpha[k] * y_hist[k];
-    }
-    Positions d = apply_inverse_proxy(q);
-    for (std::size_t k = 0; k < s_hist.size(); ++k) d += (alpha[k] - rho_hist[k] * dot(y_hist[k], d)) * s_hist[k];
-    d = -d;
+    Positions d = history.direction(g, [this](const Positions& q) { return apply_inverse_proxy(q); });
     double gd = dot(g, d);
     if (!(gd < 0.0)) {   // not a descent direction: restart from the proxy step
-      s_hist.clear(), y_hist.clear(), rho_hist.clear();
+      history.clear();
       d = -apply_inverse_proxy(g);
       gd = dot(g, d);
     }
-    double step = 1.0;
-    double ft = 0.0;
-    bool accepted = false;
-    for (int j = 0; j <= settings_.line_search_halvings; ++j, step *= 0.5) {
-      xt = x + step * d;
-      ft = objective(xt, y, gt);
-      if (std::isfinite(ft) && ft <= fx + armijo_c1 * step * gd && dot(gt, d) >= curvature_c2 * gd) {
-        accepted = true;
-        break;
-      }
-    }
+    const LineSearchResult ls = line_search(x, d, y, fx, gd, xt, gt);
     ++report.iterations;
-    if (!accepted) {
+    if (!ls.accepted) {
       ++report.stagnations;
-      if (!(ft < fx)) {   // no decrease at the smallest step either
-        if (s_hist.empty() || report.stagnations >= max_stagnations) {
+      if (!(ls.objective < fx)) {   // no decrease at the smallest step either
+        if (history.empty() || report.stagnations >= max_stagnations) {
           report.stop_reason = "line_search";
           break;
         }
-        s_hist.clear(), y_hist.clear(), rho_hist.clear();
+        history.clear();
         continue;
       }
     }
-    require_finite(ft, report.iterations);
-    const Positions s = xt - x;
-    const Positions yk = gt - g;
-    const double sy = dot(s, yk);
-    if (sy > 1e-16 * std::sqrt(dot(s, s) * dot(yk, yk))) {   // keep only pairs with positive curvature
-      s_hist.push_back(s), y_hist.push_back(yk), rho_hist.push_back(1.0 / sy);
-      if (static_cast<int>(s_hist.size()) > settings_.lbfgs_history) {
-        s_hist.pop_front(), y_hist.pop_front(), rho_hist.pop_front();
-      }
-    }
+    require_finite(ls.objective, report.iterations);
+    history.push(xt - x, gt - g);
     x = xt;
     g = gt;
-    fx = ft;
+    fx = ls.objective;
     if (objective_stalled(f_hist, fx)) {
       report.converged = true;
       report.stop_reason = "objective";

@@ -73,12 +73,12 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   max_edge_um_ = 20.0 * edge_max;
 
   const auto start = std::chrono::steady_clock::now();
-  const Eigen::SparseMatrix<double> l = energy_->stiffness_proxy();
+  const Eigen::SparseMatrix<double> l = energy_->stiffness_proxy();   // full weights: Rayleigh damping
   Eigen::SparseMatrix<double> identity(n, n);
   identity.setIdentity();
   damped_mass_ = mass_fg_ * identity + (h_us_ * material.rayleigh_beta_s * us_per_s) * l;
   damped_mass_solver_.compute(damped_mass_);
-  const Eigen::SparseMatrix<double> h0 = damped_mass_ / (h_us_ * h_us_) + l;
+  const Eigen::SparseMatrix<double> h0 = damped_mass_ / (h_us_ * h_us_) + energy_->stiffness_proxy(settings.area_proxy_fraction);
   proxy_.compute(h0);
   if (proxy_.info() != Eigen::Success || damped_mass_solver_.info() != Eigen::Success) {
     throw hs::common::NumericalError("npFEM: the Hessian proxy is not positive definite (check the mesh and moduli)");

@@ -82,7 +82,14 @@ class NpfemSolver {
   [[nodiscard]] const NpfemStatistics& statistics() const { return stats_; }
 
  private:
+  struct LineSearchResult {
+    double objective;
+    bool accepted;
+  };
   double objective(const Positions& x, const Positions& y, Positions& gradient);
+  /// Backtracking alpha = 1, 1/2, ... until the Armijo and curvature (Wolfe) conditions hold; xt, gt: last trial.
+  LineSearchResult line_search(const Positions& x, const Positions& d, const Positions& y, double fx, double gd,
+                               Positions& xt, Positions& gt);
   Positions apply_inverse_proxy(const Positions& g) const;
   NpfemStepReport minimise(Positions& x, const Positions& y);
   NpfemStepReport projective_dynamics(Positions& x, const Positions& y);
