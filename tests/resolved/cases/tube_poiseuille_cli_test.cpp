@@ -69,7 +69,7 @@ TEST(TubePoiseuilleCase, NegativeViscosityIsExitTwo) {
 }
 
 TEST(TubePoiseuilleCase, TauAtOneHalfIsExitTwo) {
-  expect_config_error("tau_half", "tau = 1.5 ", "tau = 0.5 ", "[numerics] tau");
+  expect_config_error("tau_half", "tau = 2.5 ", "tau = 0.5 ", "[numerics] tau");
 }
 
 TEST(TubePoiseuilleCase, MachTooHighIsExitTwo) {
@@ -83,7 +83,7 @@ TEST(TubePoiseuilleCase, TubeLargerThanBoxIsExitTwo) {
 }
 
 TEST(TubePoiseuilleCase, GivingTheTimeStepTooIsExitTwo) {
-  expect_config_error("dt", "tau = 1.5 ", "time_step_s = 1e-7\ntau = 1.5 ", "time_step_s");
+  expect_config_error("dt", "tau = 2.5 ", "time_step_s = 1e-7\ntau = 2.5 ", "time_step_s");
 }
 
 TEST(TubePoiseuilleCase, QuickRunPassesAndWritesSummary) {
