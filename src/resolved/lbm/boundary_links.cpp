@@ -7,26 +7,31 @@
 
 namespace hs::resolved {
 
-WallLink make_wall_link(std::ptrdiff_t node, std::ptrdiff_t target, std::ptrdiff_t second, bool second_usable,
-                        int dir, double q, const common::Vec3& wall_velocity_lu, double rho_wall_lu) {
-  const auto& c = D3Q19::c[static_cast<std::size_t>(dir)];
-  const double cu = c[0] * wall_velocity_lu.x + c[1] * wall_velocity_lu.y + c[2] * wall_velocity_lu.z;
-  const double d = -2.0 * D3Q19::w[static_cast<std::size_t>(dir)] * rho_wall_lu * cu / D3Q19::cs2;
-  WallLink l{.target = target, .node = node, .second = node, .dir = dir, .a = 1.0, .b = 0.0, .c = 0.0, .d = d};
-  if (q == 0.5 || (q < 0.5 && !second_usable)) return l;
+WallLink make_wall_link(const LinkSpec& s) {
+  const auto& c = D3Q19::c[static_cast<std::size_t>(s.dir)];
+  const common::Vec3& uw = s.wall_velocity_lu;
+  const double cu = c[0] * uw.x + c[1] * uw.y + c[2] * uw.z;
+  const double d = -2.0 * D3Q19::w[static_cast<std::size_t>(s.dir)] * s.rho_wall_lu * cu / D3Q19::cs2;
+  WallLink l{.target = s.target, .node = s.node, .second = s.node, .behind = s.second, .dir = s.dir,
+             .a = 1.0, .b = 0.0, .c = 0.0, .d = d, .e = 0.0};
+  const double q = s.q;
+  if (!s.interpolated || (q < 0.5 && !s.second_usable)) return l;
+  const double exactness = (q * q - 4.0 * s.lambda / 3.0) / s.lambda_plus;
   if (q < 0.5) {
     l.a = 2.0 * q;
     l.b = 1.0 - 2.0 * q;
-    l.second = second;
+    l.second = s.second;
+    l.e = 2.0 * q - 1.0 + exactness;
   } else {
     l.a = 1.0 / (2.0 * q);
     l.c = (2.0 * q - 1.0) / (2.0 * q);
     l.d = d / (2.0 * q);
+    l.e = (1.0 - 2.0 * q + exactness) / (2.0 * q);
   }
   return l;
 }
 
-void apply_wall_links(std::span<const WallLink> links, double* src, std::size_t volume) {
+void apply_wall_links(std::span<const WallLink> links, double* src, const double* previous, std::size_t volume) {
   const auto n = static_cast<std::ptrdiff_t>(links.size());
   const auto vol = static_cast<std::ptrdiff_t>(volume);
   // Each link costs a few memory accesses: only tens of thousands of them are worth a parallel region.
@@ -35,8 +40,10 @@ void apply_wall_links(std::span<const WallLink> links, double* src, std::size_t 
     const WallLink& l = links[static_cast<std::size_t>(k)];
     const std::ptrdiff_t i = l.dir;
     const std::ptrdiff_t o = D3Q19::opposite(l.dir);
-    src[o * vol + l.target] = l.a * src[i * vol + l.node] + l.b * src[i * vol + l.second] +
-                              l.c * src[o * vol + l.node] + l.d;
+    const double post_i = src[i * vol + l.node];
+    const double post_o = src[o * vol + l.node];
+    const double odd_change = 0.5 * (previous[i * vol + l.behind] - previous[o * vol + l.target]) - 0.5 * (post_i - post_o);
+    src[o * vol + l.target] = l.a * post_i + l.b * src[i * vol + l.second] + l.c * post_o + l.d + l.e * odd_change;
   }
 }
 

@@ -17,31 +17,54 @@ enum class WallRule {
 
 /// One link from fluid node x along c_i that crosses a wall. The pull at x for direction -i reads slot
 /// (target = x + c_i, -i); the wall pass writes there, before the bulk kernel:
-///   value = a f*_i(x) + b f*_i(x - c_i) + c f*_-i(x) + d
+///   value = a f*_i(x) + b f*_i(x - c_i) + c f*_-i(x) + d + e [ (f_i(x) - f_-i(x))/2 - (f*_i(x) - f*_-i(x))/2 ]
+/// where f are the pre-collision populations of x (read from the previous buffer) and f* the post-collision ones.
 /// Half-way bounce-back: a = 1, b = c = 0, d = -2 w_i rho_w (c_i . u_w) / c_s^2 (moving wall, Ladd 1994).
 /// Bouzidi, Firdaouss & Lallemand 2001 (Phys. Fluids 13:3452), linear, q = wall fraction along the link:
 ///   q <  1/2: a = 2q, b = 1 - 2q, c = 0, d as half-way;   q >= 1/2: a = 1/(2q), b = 0, c = (2q-1)/(2q), d / (2q)
 /// (Krueger et al. 2017, section 11.3.3). With q < 1/2 and x - c_i not fluid, it falls back to half-way.
-/// Caveat (measured): linear Bouzidi is not parametrised by the TRT magic number alone; at q != 1/2 its steady
-/// error grows with tau at fixed Lambda (plane channel, q = 0.25: 0.16 % at tau = 1, 1.1 % at tau = 2, 3.7 % at
-/// tau = 4; tube R = 10: 0.17 % at tau = 1, 0.92 % at tau = 2). Keep tau near 1 where wall accuracy matters.
+/// Plain linear Bouzidi is not parametrised by the TRT magic number alone. Our steady-state analysis of the TRT
+/// recurrence for a quadratic velocity field (in the spirit of Ginzburg, Verhaeghe & d'Humieres 2008, Commun.
+/// Comput. Phys. 3:427) gives for the link closure, with u the half-force velocity, d = c_i . grad:
+///   u - q du + [Lambda + Lambda+ (1/2 - q)] d^2u - (Lambda/3) lap u = 0        (Lambda+ = tau+ - 1/2),
+/// so the wall moves with tau (measured, plane channel at q = 0.25: 0.16 % error at tau = 1, 3.7 % at tau = 4).
+/// At steady state the odd part of (f - f*) at x equals Lambda+ d^2u (per link weight), so adding e times it, with
+///   e = 2q - 1 + (q^2 - 4 Lambda/3) / Lambda+            (q < 1/2)
+///   e = [1 - 2q + (q^2 - 4 Lambda/3) / Lambda+] / (2q)   (q >= 1/2)
+/// turns the closure into u - q du + q^2/2 d^2u + (Lambda/3)(d^2u - lap u) = 0: independent of tau at fixed Lambda,
+/// exact for planar walls at any q (verified to round-off in a channel for q in 0.02..0.9, tau in 0.6..4) and
+/// second order for curved ones. The amplification 1/Lambda+ asks for tau not too close to 1/2 (tested >= 0.6).
 struct WallLink {
   std::ptrdiff_t target;   // linear index of x + c_i
   std::ptrdiff_t node;     // linear index of x
   std::ptrdiff_t second;   // linear index of x - c_i (= node when b = 0)
+  std::ptrdiff_t behind;   // linear index of x - c_i, where the pre-collision f_i(x) comes from
   int dir;                 // i, pointing from the fluid into the wall
-  double a, b, c, d;
+  double a, b, c, d, e;
 };
 
-/// Builds the link of fluid node `node` along direction `dir` with wall fraction q (1/2 for half-way).
-/// `second_usable` says whether x - c_i holds valid post-collision populations (fluid or open boundary).
-WallLink make_wall_link(std::ptrdiff_t node, std::ptrdiff_t target, std::ptrdiff_t second, bool second_usable,
-                        int dir, double q, const common::Vec3& wall_velocity_lu, double rho_wall_lu);
+/// What make_wall_link needs to know about one cut link.
+struct LinkSpec {
+  std::ptrdiff_t node;        // x
+  std::ptrdiff_t target;      // x + c_i
+  std::ptrdiff_t second;      // x - c_i
+  bool second_usable;         // x - c_i holds valid populations (fluid or open boundary)
+  int dir;                    // i
+  double q;                   // wall fraction along the link (Bouzidi)
+  bool interpolated;          // Bouzidi with the correction above; false = plain half-way bounce-back
+  common::Vec3 wall_velocity_lu;
+  double rho_wall_lu;
+  double lambda_plus;         // tau+ - 1/2
+  double lambda;              // (tau+ - 1/2)(tau- - 1/2)
+};
+
+WallLink make_wall_link(const LinkSpec& spec);
 
 /// Writes the bounce-back values of every link into `src` (post-collision populations, component stride
-/// `volume`). pre: ghosts of src exchanged and open-boundary nodes set. post: every slot a fluid node pulls
-/// from across a wall holds its bounce-back value.
-void apply_wall_links(std::span<const WallLink> links, double* src, std::size_t volume);
+/// `volume`); `previous` is the buffer of the step before (post-collision f* of t-1, complete), from which the
+/// pre-collision f(x, t) is pulled. pre: ghosts of src exchanged and open-boundary nodes set. post: every slot a
+/// fluid node pulls from across a wall holds its bounce-back value.
+void apply_wall_links(std::span<const WallLink> links, double* src, const double* previous, std::size_t volume);
 
 /// A ghost node on an open face, set by non-equilibrium extrapolation (Guo, Zheng & Shi 2002, Chinese Phys.
 /// 11:366): f*_i(ghost) = f^eq_i(rho_b, u_b) + [f*_i(inner) - f^eq_i(rho*, u*)(inner)], where rho*, u* are the

@@ -102,7 +102,7 @@ void FluidLattice::exchange_halos() {
 
 void FluidLattice::apply_boundaries() {
   apply_open_boundaries(open_nodes_, src_.data(), stride_);
-  apply_wall_links(links_, src_.data(), stride_);
+  apply_wall_links(links_, src_.data(), dst_.data(), stride_);
 }
 
 void FluidLattice::step() {

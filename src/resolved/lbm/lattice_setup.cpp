@@ -78,7 +78,8 @@ void FluidLattice::build_wall_links() {
           const bool second_usable = second_flag == kFluid || second_flag == kOpen;
           double q = 0.5;
           common::Vec3 u_wall;
-          if (flag == kShapeSolid && wall_rule_ == WallRule::bouzidi) {
+          const bool interpolated = flag == kShapeSolid && wall_rule_ == WallRule::bouzidi;
+          if (interpolated) {
             const common::Vec3 p = shape_point(g);
             const common::Vec3 step{static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
             q = common::wall_crossing_fraction(*shape_, p, p + placement_.spacing * step);
@@ -91,7 +92,13 @@ void FluidLattice::build_wall_links() {
               }
             }
           }
-          links_.push_back(make_wall_link(node, target, second, second_usable, i, q, u_wall, spec_.rho0_lu));
+          const double lambda_plus = 1.0 / spec_.collision.omega_plus() - 0.5;
+          const double lambda_minus = 1.0 / spec_.collision.omega_minus() - 0.5;
+          links_.push_back(make_wall_link(LinkSpec{.node = node, .target = target, .second = second,
+                                                   .second_usable = second_usable, .dir = i, .q = q,
+                                                   .interpolated = interpolated, .wall_velocity_lu = u_wall,
+                                                   .rho_wall_lu = spec_.rho0_lu, .lambda_plus = lambda_plus,
+                                                   .lambda = lambda_plus * lambda_minus}));
         }
       }
     }
