@@ -13,11 +13,20 @@ namespace hs::unresolved {
 class CellGrid {
  public:
   /// Cells of edge >= min_cell_m covering [lo, hi]; points outside are put in the nearest boundary cell.
-  CellGrid(const hs::common::Vec3& lo_m, const hs::common::Vec3& hi_m, double min_cell_m) : lo_(lo_m) {
-    for (int a = 0; a < 3; ++a) {
-      const double extent = hi_m[a] - lo_m[a];
-      n_[a] = std::max(1, static_cast<int>(std::floor(extent / min_cell_m)));
-      inv_cell_[a] = static_cast<double>(n_[a]) / std::max(extent, 1e-300);
+  /// At most about max_cells cells: a sparse system in a large box gets larger cells instead of empty memory.
+  CellGrid(const hs::common::Vec3& lo_m, const hs::common::Vec3& hi_m, double min_cell_m, double max_cells = 1e9)
+      : lo_(lo_m) {
+    double cell = min_cell_m;
+    for (int pass = 0; pass < 2; ++pass) {
+      double count = 1.0;
+      for (int a = 0; a < 3; ++a) {
+        const double extent = hi_m[a] - lo_m[a];
+        n_[a] = std::max(1, static_cast<int>(std::floor(extent / cell)));
+        inv_cell_[a] = static_cast<double>(n_[a]) / std::max(extent, 1e-300);
+        count *= n_[a];
+      }
+      if (count <= max_cells) break;
+      cell *= std::cbrt(count / max_cells) * 1.01;
     }
   }
 

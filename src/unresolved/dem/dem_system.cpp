@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The DEM time step of one block.
 #include "unresolved/dem/dem_system.hpp"
+#include "unresolved/dem/parallel_threshold.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -88,24 +89,7 @@ void DemSystem::compute_forces() {
   stats_.pair_contacts = pairs_.compute(particles_, list_, dt);
   particles_.fold_ghost_forces();
   stats_.wall_contacts = wall_contacts_ ? wall_contacts_->compute(particles_, dt) : 0;
-  add_external_forces();
   if (hook_) hook_(particles_);
-}
-
-void DemSystem::add_external_forces() {
-  auto& f = particles_.force_N();
-  auto& tq = particles_.torque_Nm();
-  const auto& fe = particles_.external_force_N();
-  const auto& te = particles_.external_torque_Nm();
-  const auto n = static_cast<std::int64_t>(particles_.n_owned());
-#pragma omp parallel for schedule(static)
-  for (std::int64_t ii = 0; ii < n; ++ii) {
-    const auto i = static_cast<std::size_t>(ii);
-    for (int a = 0; a < 3; ++a) {
-      f[a][i] += fe[a][i];
-      tq[a][i] += te[a][i];
-    }
-  }
 }
 
 void DemSystem::step() {

@@ -33,7 +33,8 @@ struct DemStepStats {
 
 /// Advances the particles of one block by velocity Verlet (exact in the linear drag, see exponential_verlet.hpp):
 ///   half kick -> drift -> [rebuild: wrap, cell sort, periodic ghosts, neighbour list, wall candidates | ghost
-///   update] -> forces: pairs, ghost fold, walls, external arrays, hook -> half kick.
+///   update] -> forces: pairs, ghost fold, walls, hook -> half kick (which adds external_force_N()).
+/// Owned particles are re-sorted at list rebuilds: hold on to id(), not to indices, across steps.
 /// The coupling reads and writes per-particle data through particles() (external force, drag coefficient,
 /// fluid velocity, drag impulse, DI); after adding or removing particles call particles_changed().
 class DemSystem {
@@ -71,7 +72,6 @@ class DemSystem {
  private:
   void rebuild();
   void compute_forces();
-  void add_external_forces();
 
   DemSettings settings_;
   const hs::common::Shape* walls_;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Linked-cell construction of the half Verlet list, history carry-over and the rebuild criterion.
 #include "unresolved/dem/neighbor_list.hpp"
+#include "unresolved/dem/parallel_threshold.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,10 +30,13 @@ void bin_particles(const ParticleStore& p, std::size_t n, const CellGrid& grid, 
   for (std::size_t i = 0; i < n; ++i) items[fill[static_cast<std::size_t>(cell[i])]++] = static_cast<std::uint32_t>(i);
 }
 
+/// Cells allowed for n particles: a few per particle keeps the grid memory proportional to the particles.
+double cell_budget(std::size_t n) { return 27.0 + 4.0 * static_cast<double>(n); }
+
 }  // namespace
 
 std::vector<std::size_t> cell_sort_order(const ParticleStore& particles, const Domain& domain, double cell_m) {
-  const CellGrid grid(domain.box.lo, domain.box.hi, cell_m);
+  const CellGrid grid(domain.box.lo, domain.box.hi, cell_m, cell_budget(particles.n_owned()));
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> items;
   bin_particles(particles, particles.n_owned(), grid, start, items);
@@ -67,7 +71,7 @@ void NeighborList::build(const ParticleStore& p, const hs::common::Vec3& lo_m, c
   double r_max = 0.0;
   for (double r : p.radius_m()) r_max = std::max(r_max, r);
   const double cutoff = 2.0 * r_max + skin_m_;
-  const CellGrid grid(lo_m, hi_m, cutoff);
+  const CellGrid grid(lo_m, hi_m, cutoff, cell_budget(p.size()));
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> items;
   bin_particles(p, p.size(), grid, start, items);
@@ -76,7 +80,7 @@ void NeighborList::build(const ParticleStore& p, const hs::common::Vec3& lo_m, c
   const auto& rad = p.radius_m();
   const auto& id = p.id();
   std::vector<std::uint32_t> count(n_owned + 1, 0);
-  const int n_threads = omp_get_max_threads();
+  const int n_threads = static_cast<std::int64_t>(n_owned) > omp_min_particles ? omp_get_max_threads() : 1;
   std::vector<std::vector<std::uint32_t>> local(static_cast<std::size_t>(n_threads));
 #pragma omp parallel num_threads(n_threads)
   {
@@ -110,6 +114,14 @@ void NeighborList::build(const ParticleStore& p, const hs::common::Vec3& lo_m, c
   neighbors_.reserve(offsets_[n_owned]);
   for (const auto& l : local) neighbors_.insert(neighbors_.end(), l.begin(), l.end());
   restore_history(p, history);
+  pair_eff_.resize(neighbors_.size());
+  const auto& mass = p.mass_kg();
+  for (std::size_t i = 0; i < n_owned; ++i) {
+    for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+      const std::size_t j = neighbors_[k];
+      pair_eff_[k] = {rad[i] * rad[j] / (rad[i] + rad[j]), mass[i] * mass[j] / (mass[i] + mass[j])};
+    }
+  }
   for (int a = 0; a < 3; ++a) x_at_build_[a].assign(pos[a].begin(), pos[a].begin() + static_cast<std::ptrdiff_t>(n_owned));
   ++n_builds_;
 }
@@ -119,7 +131,7 @@ void NeighborList::restore_history(const ParticleStore& p, const ContactHistory&
   if (history.keys.empty()) return;
   const auto& id = p.id();
   const auto n = static_cast<std::int64_t>(n_owned());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > omp_min_particles)
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
@@ -135,7 +147,7 @@ bool NeighborList::needs_rebuild(const ParticleStore& p) const {
   const auto n = static_cast<std::int64_t>(p.n_owned());
   if (static_cast<std::size_t>(n) != n_owned()) return true;
   double max_d2 = 0.0;
-#pragma omp parallel for reduction(max : max_d2) schedule(static)
+#pragma omp parallel for reduction(max : max_d2) schedule(static) if (n > omp_min_particles)
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     const double dx = pos[0][i] - x_at_build_[0][i], dy = pos[1][i] - x_at_build_[1][i],

@@ -40,6 +40,8 @@ class NeighborList {
   [[nodiscard]] const std::vector<std::uint32_t>& offsets() const { return offsets_; }
   [[nodiscard]] const std::vector<std::uint32_t>& neighbors() const { return neighbors_; }
   [[nodiscard]] std::vector<std::array<double, 3>>& shear_m() { return shear_; }
+  /// R* = r_i r_j / (r_i + r_j) and m* = m_i m_j / (m_i + m_j) of each listed pair, fixed between builds.
+  [[nodiscard]] const std::vector<std::array<double, 2>>& pair_effective() const { return pair_eff_; }
   [[nodiscard]] std::size_t n_builds() const { return n_builds_; }
   [[nodiscard]] double skin_m() const { return skin_m_; }
 
@@ -50,6 +52,7 @@ class NeighborList {
   std::vector<std::uint32_t> offsets_;    // CSR: neighbours of i are [offsets_[i], offsets_[i+1])
   std::vector<std::uint32_t> neighbors_;
   std::vector<std::array<double, 3>> shear_;
+  std::vector<std::array<double, 2>> pair_eff_;
   std::array<std::vector<double>, 3> x_at_build_;
   std::size_t n_builds_ = 0;
 };

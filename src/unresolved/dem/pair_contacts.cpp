@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The particle-particle contact loop.
 #include "unresolved/dem/pair_contacts.hpp"
+#include "unresolved/dem/parallel_threshold.hpp"
 
 #include <algorithm>
 
@@ -25,12 +26,19 @@ void PairContacts::plan(const ParticleStore& p, const NeighborList& list, int n_
     } else {
       while (i < n && (off[i + 1] <= target || i - lo < 1)) ++i;   // pairs balanced
     }
-    std::size_t tlo = lo, thi = i;
+    std::size_t tlo = lo, thi = i, glo = p.size(), ghi = n;
     for (std::size_t k = off.empty() ? 0 : off[lo]; k < (off.empty() ? 0 : off[i]); ++k) {
-      tlo = std::min<std::size_t>(tlo, nbr[k]);
-      thi = std::max<std::size_t>(thi, nbr[k] + 1);
+      const std::size_t j = nbr[k];
+      if (j < n) {
+        tlo = std::min(tlo, j);
+        thi = std::max(thi, j + 1);
+      } else {
+        glo = std::min(glo, j);
+        ghi = std::max(ghi, j + 1);
+      }
     }
-    ranges_[t] = {lo, i, tlo, std::max(thi, tlo)};
+    if (ghi == n) glo = n;   // no ghost touched: empty range
+    ranges_[t] = {lo, i, tlo, std::max(thi, tlo), glo, ghi};
   }
   buffers_.resize(ranges_.size());
   for (auto& b : buffers_) {
@@ -42,7 +50,8 @@ void PairContacts::plan(const ParticleStore& p, const NeighborList& list, int n_
 std::size_t PairContacts::compute(ParticleStore& p, NeighborList& list, double dt_s) {
   auto& f = p.force_N();
   auto& tq = p.torque_Nm();
-  const int n_threads = omp_get_max_threads();
+  const int n_threads =
+      static_cast<std::int64_t>(list.n_owned()) > omp_min_particles ? omp_get_max_threads() : 1;
   for (int a = 0; a < 3; ++a) {
     std::fill(f[a].begin(), f[a].end(), 0.0);
     std::fill(tq[a].begin(), tq[a].end(), 0.0);
@@ -62,14 +71,17 @@ std::size_t PairContacts::compute(ParticleStore& p, NeighborList& list, double d
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const ThreadRange& r = ranges_[t];
     auto& b = buffers_[t];
-    for (auto& c : b) std::fill(c.begin() + static_cast<std::ptrdiff_t>(r.touch_lo), c.begin() + static_cast<std::ptrdiff_t>(r.touch_hi), 0.0);
+    for (auto& c : b) {
+      std::fill(c.begin() + static_cast<std::ptrdiff_t>(r.touch_lo), c.begin() + static_cast<std::ptrdiff_t>(r.touch_hi), 0.0);
+      std::fill(c.begin() + static_cast<std::ptrdiff_t>(r.ghost_lo), c.begin() + static_cast<std::ptrdiff_t>(r.ghost_hi), 0.0);
+    }
     contacts += compute_range(p, list, dt_s, r.i_lo, r.i_hi,
                               {b[0].data(), b[1].data(), b[2].data(), b[3].data(), b[4].data(), b[5].data()});
 #pragma omp barrier
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < n_all; ++k) {
       for (std::size_t s = 0; s < ranges_.size(); ++s) {
-        if (k < ranges_[s].touch_lo || k >= ranges_[s].touch_hi) continue;
+        if (!ranges_[s].touches(k)) continue;
         for (int a = 0; a < 3; ++a) {
           f[a][k] += buffers_[s][static_cast<std::size_t>(a)][k];
           tq[a][k] += buffers_[s][static_cast<std::size_t>(a) + 3][k];
@@ -82,56 +94,79 @@ std::size_t PairContacts::compute(ParticleStore& p, NeighborList& list, double d
 
 std::size_t PairContacts::compute_range(ParticleStore& p, NeighborList& list, double dt_s, std::size_t i_lo,
                                         std::size_t i_hi, std::array<double*, 6> out) const {
-  const double* x = p.position_m()[0].data();
-  const double* y = p.position_m()[1].data();
-  const double* z = p.position_m()[2].data();
-  const auto& v = p.velocity_m_s();
-  const auto& w = p.angular_velocity_rad_s();
-  const double* rad = p.radius_m().data();
-  const double* mass = p.mass_kg().data();
-  const auto& off = list.offsets();
-  const auto& nbr = list.neighbors();
-  auto& shear = list.shear_m();
-  const PairConstants& k = law_.particle_particle();
+  // Raw restrict pointers: the stores to `out` cannot alias the particle data, so loads stay in registers.
+  const double* __restrict__ x = p.position_m()[0].data();
+  const double* __restrict__ y = p.position_m()[1].data();
+  const double* __restrict__ z = p.position_m()[2].data();
+  const double* __restrict__ vx = p.velocity_m_s()[0].data();
+  const double* __restrict__ vy = p.velocity_m_s()[1].data();
+  const double* __restrict__ vz = p.velocity_m_s()[2].data();
+  const double* __restrict__ wx = p.angular_velocity_rad_s()[0].data();
+  const double* __restrict__ wy = p.angular_velocity_rad_s()[1].data();
+  const double* __restrict__ wz = p.angular_velocity_rad_s()[2].data();
+  const double* __restrict__ rad = p.radius_m().data();
+  double* __restrict__ fx = out[0];
+  double* __restrict__ fy = out[1];
+  double* __restrict__ fz = out[2];
+  double* __restrict__ tx = out[3];
+  double* __restrict__ ty = out[4];
+  double* __restrict__ tz = out[5];
+  const std::uint32_t* __restrict__ off = list.offsets().data();
+  const std::uint32_t* __restrict__ nbr = list.neighbors().data();
+  double* __restrict__ shear = list.shear_m().empty() ? nullptr : list.shear_m().front().data();
+  const double* __restrict__ eff = list.pair_effective().empty() ? nullptr : list.pair_effective().front().data();
+  const PairConstants k = law_.particle_particle();
   const bool limit = law_.limit_normal_force();
   std::size_t contacts = 0;
   for (std::size_t i = i_lo; i < i_hi; ++i) {
-    double fi[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0};
+    const double xi = x[i], yi = y[i], zi = z[i], ri = rad[i];
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0, txi = 0.0, tyi = 0.0, tzi = 0.0;
     for (std::uint32_t e = off[i]; e < off[i + 1]; ++e) {
       const std::size_t j = nbr[e];
-      const double dx = x[i] - x[j], dy = y[i] - y[j], dz = z[i] - z[j];
+      const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
       const double r2 = dx * dx + dy * dy + dz * dz;
-      const double rsum = rad[i] + rad[j];
+      const double rsum = ri + rad[j];
+      double* s = shear + 3 * static_cast<std::size_t>(e);
       if (r2 >= rsum * rsum) {
-        shear[e] = {0.0, 0.0, 0.0};
+        s[0] = s[1] = s[2] = 0.0;
         continue;
       }
       ++contacts;
       const double r = std::sqrt(r2);
+      const double inv_r = 1.0 / r;
       const double delta = rsum - r;
-      ContactInput c{.n = {dx / r, dy / r, dz / r}, .delta_m = delta, .v_rel = {},
-                     .r_eff_m = rad[i] * rad[j] / rsum, .m_eff_kg = mass[i] * mass[j] / (mass[i] + mass[j])};
-      const double ric = rad[i] - 0.5 * delta, rjc = rad[j] - 0.5 * delta;
-      const double ws[3] = {ric * w[0][i] + rjc * w[0][j], ric * w[1][i] + rjc * w[1][j], ric * w[2][i] + rjc * w[2][j]};
-      c.v_rel[0] = v[0][i] - v[0][j] - (ws[1] * c.n[2] - ws[2] * c.n[1]);
-      c.v_rel[1] = v[1][i] - v[1][j] - (ws[2] * c.n[0] - ws[0] * c.n[2]);
-      c.v_rel[2] = v[2][i] - v[2][j] - (ws[0] * c.n[1] - ws[1] * c.n[0]);
+      ContactInput c{.n = {dx * inv_r, dy * inv_r, dz * inv_r}, .delta_m = delta, .v_rel = {},
+                     .r_eff_m = eff[2 * e], .m_eff_kg = eff[2 * e + 1]};
+      const double ric = ri - 0.5 * delta, rjc = rad[j] - 0.5 * delta;
+      const double wsx = ric * wx[i] + rjc * wx[j], wsy = ric * wy[i] + rjc * wy[j], wsz = ric * wz[i] + rjc * wz[j];
+      c.v_rel[0] = vx[i] - vx[j] - (wsy * c.n[2] - wsz * c.n[1]);
+      c.v_rel[1] = vy[i] - vy[j] - (wsz * c.n[0] - wsx * c.n[2]);
+      c.v_rel[2] = vz[i] - vz[j] - (wsx * c.n[1] - wsy * c.n[0]);
       double ft[3];
-      const auto fc = hertz_contact_force(c, k, limit, dt_s, shear[e].data(), ft);
+      const auto fc = hertz_contact_force(c, k, limit, dt_s, s, ft);
       // Torque about each centre: contact point at -ric n from i and +rjc n from j; both = -r_c (n x F_t).
-      const double nxf[3] = {c.n[1] * ft[2] - c.n[2] * ft[1], c.n[2] * ft[0] - c.n[0] * ft[2],
-                             c.n[0] * ft[1] - c.n[1] * ft[0]};
-      for (int a = 0; a < 3; ++a) {
-        fi[a] += fc[static_cast<std::size_t>(a)];
-        out[static_cast<std::size_t>(a)][j] -= fc[static_cast<std::size_t>(a)];
-        ti[a] -= ric * nxf[a];
-        out[static_cast<std::size_t>(a) + 3][j] -= rjc * nxf[a];
-      }
+      const double nxf0 = c.n[1] * ft[2] - c.n[2] * ft[1];
+      const double nxf1 = c.n[2] * ft[0] - c.n[0] * ft[2];
+      const double nxf2 = c.n[0] * ft[1] - c.n[1] * ft[0];
+      fxi += fc[0];
+      fyi += fc[1];
+      fzi += fc[2];
+      fx[j] -= fc[0];
+      fy[j] -= fc[1];
+      fz[j] -= fc[2];
+      txi -= ric * nxf0;
+      tyi -= ric * nxf1;
+      tzi -= ric * nxf2;
+      tx[j] -= rjc * nxf0;
+      ty[j] -= rjc * nxf1;
+      tz[j] -= rjc * nxf2;
     }
-    for (int a = 0; a < 3; ++a) {
-      out[static_cast<std::size_t>(a)][i] += fi[a];
-      out[static_cast<std::size_t>(a) + 3][i] += ti[a];
-    }
+    fx[i] += fxi;
+    fy[i] += fyi;
+    fz[i] += fzi;
+    tx[i] += txi;
+    ty[i] += tyi;
+    tz[i] += tzi;
   }
   return contacts;
 }

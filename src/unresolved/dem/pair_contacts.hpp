@@ -26,8 +26,12 @@ class PairContacts {
 
  private:
   struct ThreadRange {
-    std::size_t i_lo, i_hi;        // owned particles handled
-    std::size_t touch_lo, touch_hi;  // indices written (i and j)
+    std::size_t i_lo, i_hi;          // owned particles handled
+    std::size_t touch_lo, touch_hi;  // owned indices written (i and j)
+    std::size_t ghost_lo, ghost_hi;  // ghost indices written (empty when lo == hi)
+    [[nodiscard]] bool touches(std::size_t k) const {
+      return (k >= touch_lo && k < touch_hi) || (k >= ghost_lo && k < ghost_hi);
+    }
   };
   void plan(const ParticleStore& particles, const NeighborList& list, int n_threads);
   std::size_t compute_range(ParticleStore& p, NeighborList& list, double dt_s, std::size_t i_lo, std::size_t i_hi,

@@ -60,10 +60,14 @@ class ParticleStore {
 
   // Coupling data (meaningful for owned particles).
   /// Constant external force and torque added every step until changed (fluid pressure, lift, gravity...).
-  Vec3Columns& external_force_N() { return ext_force_; }
-  Vec3Columns& external_torque_Nm() { return ext_torque_; }
+  /// Asking for them writable switches the term on in the integrator (untouched, they cost no memory traffic).
+  Vec3Columns& external_force_N() { external_used_ = true; return ext_force_; }
+  Vec3Columns& external_torque_Nm() { external_used_ = true; return ext_torque_; }
   /// Linear drag beta (u_f - v), integrated exactly: beta in N s/m, u_f the fluid velocity at the particle.
-  Column& drag_coefficient_N_s_m() { return drag_beta_; }
+  /// Asking for beta writable switches the exact-drag integrator on.
+  Column& drag_coefficient_N_s_m() { drag_used_ = true; return drag_beta_; }
+  [[nodiscard]] bool external_used() const { return external_used_; }
+  [[nodiscard]] bool drag_used() const { return drag_used_; }
   Vec3Columns& fluid_velocity_m_s() { return fluid_vel_; }
   /// Drag impulse (N s) given to each particle since the coupling last zeroed it: the fluid gets minus this.
   Vec3Columns& drag_impulse_N_s() { return drag_impulse_; }
@@ -72,6 +76,7 @@ class ParticleStore {
   /// Tangential spring of the particle-wall contact (m), zero when not touching the wall.
   Vec3Columns& wall_shear_m() { return wall_shear_; }
   const Vec3Columns& external_force_N() const { return ext_force_; }
+  const Vec3Columns& external_torque_Nm() const { return ext_torque_; }
   const Column& drag_coefficient_N_s_m() const { return drag_beta_; }
   const Vec3Columns& fluid_velocity_m_s() const { return fluid_vel_; }
   const Vec3Columns& drag_impulse_N_s() const { return drag_impulse_; }
@@ -96,6 +101,8 @@ class ParticleStore {
   void resize(std::size_t n);
 
   std::size_t n_owned_ = 0;
+  bool external_used_ = false;
+  bool drag_used_ = false;
   Vec3Columns pos_, vel_, omega_, force_, torque_;
   Column radius_, mass_;
   std::vector<std::int64_t> id_;

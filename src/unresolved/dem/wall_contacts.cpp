@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The particle-wall contact loop.
 #include "unresolved/dem/wall_contacts.hpp"
+#include "unresolved/dem/parallel_threshold.hpp"
 
 #include <cstdint>
 
@@ -45,7 +46,7 @@ std::size_t WallContacts::compute(ParticleStore& p, double dt_s) const {
   const PairConstants& k = law_.particle_wall();
   const auto n = static_cast<std::int64_t>(candidates_.size());
   std::size_t contacts = 0;
-#pragma omp parallel for schedule(static) reduction(+ : contacts)
+#pragma omp parallel for schedule(static) reduction(+ : contacts) if (n > omp_min_particles)
   for (std::int64_t cc = 0; cc < n; ++cc) {
     const std::size_t i = candidates_[static_cast<std::size_t>(cc)];
     const hs::common::Vec3 x{pos[0][i], pos[1][i], pos[2][i]};
