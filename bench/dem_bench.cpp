@@ -114,8 +114,11 @@ bool on_path(const std::string& program) {
 /// One LIGGGHTS run through the shared script; its "ns/particle-step=" value, or nullopt.
 std::optional<double> run_liggghts(const std::filesystem::path& script, const PackSpec& s, int ranks) {
   const auto work = std::filesystem::temp_directory_path() / fmt::format("hs-dem-bench-liggghts-{}", ::getpid());
-  const std::string cmd = fmt::format("bash '{}' {} {} {} {} {} {} history '{}' 2>&1", script.string(), s.nx, s.ny,
-                                      s.nz, ranks, s.settle_steps, s.timed_steps, work.string());
+  // A clean environment: this process may be an MPI singleton whose OMPI_/PMIX_ variables would confuse mpirun.
+  const char* path = std::getenv("PATH");
+  const std::string cmd = fmt::format("env -i PATH='{}' HOME=/tmp bash '{}' {} {} {} {} {} {} history '{}' 2>&1",
+                                      path != nullptr ? path : "/usr/bin:/bin", script.string(), s.nx, s.ny, s.nz, ranks,
+                                      s.settle_steps, s.timed_steps, work.string());
   std::string out;
   if (FILE* pipe = ::popen(cmd.c_str(), "r")) {
     std::array<char, 4096> buf{};
