@@ -92,40 +92,40 @@ std::size_t PairContacts::compute(ParticleStore& p, NeighborList& list, double d
   return contacts;
 }
 
+namespace {
+
+/// Raw pointers to the columns the contact loop reads. Stores through the double* force buffers cannot change
+/// these pointer values (strict aliasing), so they stay in registers.
+struct PairColumns {
+  const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *rad;
+};
+
+PairColumns pair_columns(const ParticleStore& p) {
+  return {p.position_m()[0].data(), p.position_m()[1].data(), p.position_m()[2].data(),
+          p.velocity_m_s()[0].data(), p.velocity_m_s()[1].data(), p.velocity_m_s()[2].data(),
+          p.angular_velocity_rad_s()[0].data(), p.angular_velocity_rad_s()[1].data(),
+          p.angular_velocity_rad_s()[2].data(), p.radius_m().data()};
+}
+
+}  // namespace
+
 std::size_t PairContacts::compute_range(ParticleStore& p, NeighborList& list, double dt_s, std::size_t i_lo,
                                         std::size_t i_hi, std::array<double*, 6> out) const {
-  // Raw restrict pointers: the stores to `out` cannot alias the particle data, so loads stay in registers.
-  const double* __restrict__ x = p.position_m()[0].data();
-  const double* __restrict__ y = p.position_m()[1].data();
-  const double* __restrict__ z = p.position_m()[2].data();
-  const double* __restrict__ vx = p.velocity_m_s()[0].data();
-  const double* __restrict__ vy = p.velocity_m_s()[1].data();
-  const double* __restrict__ vz = p.velocity_m_s()[2].data();
-  const double* __restrict__ wx = p.angular_velocity_rad_s()[0].data();
-  const double* __restrict__ wy = p.angular_velocity_rad_s()[1].data();
-  const double* __restrict__ wz = p.angular_velocity_rad_s()[2].data();
-  const double* __restrict__ rad = p.radius_m().data();
-  double* __restrict__ fx = out[0];
-  double* __restrict__ fy = out[1];
-  double* __restrict__ fz = out[2];
-  double* __restrict__ tx = out[3];
-  double* __restrict__ ty = out[4];
-  double* __restrict__ tz = out[5];
-  const std::uint32_t* __restrict__ off = list.offsets().data();
-  const std::uint32_t* __restrict__ nbr = list.neighbors().data();
-  double* __restrict__ shear = list.shear_m().empty() ? nullptr : list.shear_m().front().data();
-  const double* __restrict__ eff = list.pair_effective().empty() ? nullptr : list.pair_effective().front().data();
+  const PairColumns c = pair_columns(p);
+  const std::uint32_t* off = list.offsets().data();
+  const std::uint32_t* nbr = list.neighbors().data();
+  double* shear = list.shear_m().empty() ? nullptr : list.shear_m().front().data();
+  const double* eff = list.pair_effective().empty() ? nullptr : list.pair_effective().front().data();
   const PairConstants k = law_.particle_particle();
   const bool limit = law_.limit_normal_force();
   std::size_t contacts = 0;
   for (std::size_t i = i_lo; i < i_hi; ++i) {
-    const double xi = x[i], yi = y[i], zi = z[i], ri = rad[i];
-    double fxi = 0.0, fyi = 0.0, fzi = 0.0, txi = 0.0, tyi = 0.0, tzi = 0.0;
+    double fi[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};   // force and torque on i
     for (std::uint32_t e = off[i]; e < off[i + 1]; ++e) {
       const std::size_t j = nbr[e];
-      const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
+      const double dx = c.x[i] - c.x[j], dy = c.y[i] - c.y[j], dz = c.z[i] - c.z[j];
       const double r2 = dx * dx + dy * dy + dz * dz;
-      const double rsum = ri + rad[j];
+      const double rsum = c.rad[i] + c.rad[j];
       double* s = shear + 3 * static_cast<std::size_t>(e);
       if (r2 >= rsum * rsum) {
         s[0] = s[1] = s[2] = 0.0;
@@ -135,38 +135,27 @@ std::size_t PairContacts::compute_range(ParticleStore& p, NeighborList& list, do
       const double r = std::sqrt(r2);
       const double inv_r = 1.0 / r;
       const double delta = rsum - r;
-      ContactInput c{.n = {dx * inv_r, dy * inv_r, dz * inv_r}, .delta_m = delta, .v_rel = {},
-                     .r_eff_m = eff[2 * e], .m_eff_kg = eff[2 * e + 1]};
-      const double ric = ri - 0.5 * delta, rjc = rad[j] - 0.5 * delta;
-      const double wsx = ric * wx[i] + rjc * wx[j], wsy = ric * wy[i] + rjc * wy[j], wsz = ric * wz[i] + rjc * wz[j];
-      c.v_rel[0] = vx[i] - vx[j] - (wsy * c.n[2] - wsz * c.n[1]);
-      c.v_rel[1] = vy[i] - vy[j] - (wsz * c.n[0] - wsx * c.n[2]);
-      c.v_rel[2] = vz[i] - vz[j] - (wsx * c.n[1] - wsy * c.n[0]);
+      ContactInput in{.n = {dx * inv_r, dy * inv_r, dz * inv_r}, .delta_m = delta, .v_rel = {},
+                      .r_eff_m = eff[2 * e], .m_eff_kg = eff[2 * e + 1]};
+      const double ric = c.rad[i] - 0.5 * delta, rjc = c.rad[j] - 0.5 * delta;
+      const double wsx = ric * c.wx[i] + rjc * c.wx[j], wsy = ric * c.wy[i] + rjc * c.wy[j],
+                   wsz = ric * c.wz[i] + rjc * c.wz[j];
+      in.v_rel[0] = c.vx[i] - c.vx[j] - (wsy * in.n[2] - wsz * in.n[1]);
+      in.v_rel[1] = c.vy[i] - c.vy[j] - (wsz * in.n[0] - wsx * in.n[2]);
+      in.v_rel[2] = c.vz[i] - c.vz[j] - (wsx * in.n[1] - wsy * in.n[0]);
       double ft[3];
-      const auto fc = hertz_contact_force(c, k, limit, dt_s, s, ft);
+      const auto fc = hertz_contact_force(in, k, limit, dt_s, s, ft);
       // Torque about each centre: contact point at -ric n from i and +rjc n from j; both = -r_c (n x F_t).
-      const double nxf0 = c.n[1] * ft[2] - c.n[2] * ft[1];
-      const double nxf1 = c.n[2] * ft[0] - c.n[0] * ft[2];
-      const double nxf2 = c.n[0] * ft[1] - c.n[1] * ft[0];
-      fxi += fc[0];
-      fyi += fc[1];
-      fzi += fc[2];
-      fx[j] -= fc[0];
-      fy[j] -= fc[1];
-      fz[j] -= fc[2];
-      txi -= ric * nxf0;
-      tyi -= ric * nxf1;
-      tzi -= ric * nxf2;
-      tx[j] -= rjc * nxf0;
-      ty[j] -= rjc * nxf1;
-      tz[j] -= rjc * nxf2;
+      const double nxf[3] = {in.n[1] * ft[2] - in.n[2] * ft[1], in.n[2] * ft[0] - in.n[0] * ft[2],
+                             in.n[0] * ft[1] - in.n[1] * ft[0]};
+      for (std::size_t a = 0; a < 3; ++a) {
+        fi[a] += fc[a];
+        out[a][j] -= fc[a];
+        fi[a + 3] -= ric * nxf[a];
+        out[a + 3][j] -= rjc * nxf[a];
+      }
     }
-    fx[i] += fxi;
-    fy[i] += fyi;
-    fz[i] += fzi;
-    tx[i] += txi;
-    ty[i] += tyi;
-    tz[i] += tzi;
+    for (std::size_t a = 0; a < 6; ++a) out[a][i] += fi[a];
   }
   return contacts;
 }
