@@ -13,10 +13,11 @@ namespace {
 inline double phi1(double x) { return x > 1e-8 ? -std::expm1(-x) / x : 1.0 - 0.5 * x; }
 
 /// v += h (f + f_ext) / m and w += h (t + t_ext) / I along one axis: a branch-free loop the compiler vectorises.
+/// Orphaned work-sharing: called inside one parallel region for all three axes (fewer fork/joins and barriers).
 void plain_kick_axis(std::int64_t n, double h_s, const double* __restrict__ mass, const double* __restrict__ rad,
                      double* __restrict__ v, const double* __restrict__ f, const double* __restrict__ fe,
                      double* __restrict__ w, const double* __restrict__ t, const double* __restrict__ te) {
-#pragma omp parallel for simd schedule(static) if (n > omp_min_particles)
+#pragma omp for simd schedule(static) nowait
   for (std::int64_t i = 0; i < n; ++i) {
     const double hm = h_s / mass[i];
     v[i] += hm * (f[i] + fe[i]);
@@ -28,7 +29,7 @@ void plain_kick_axis(std::int64_t n, double h_s, const double* __restrict__ mass
 void contact_kick_axis(std::int64_t n, double h_s, const double* __restrict__ mass, const double* __restrict__ rad,
                        double* __restrict__ v, const double* __restrict__ f, double* __restrict__ w,
                        const double* __restrict__ t) {
-#pragma omp parallel for simd schedule(static) if (n > omp_min_particles)
+#pragma omp for simd schedule(static) nowait
   for (std::int64_t i = 0; i < n; ++i) {
     const double hm = h_s / mass[i];
     v[i] += hm * f[i];
@@ -43,6 +44,7 @@ void exponential_half_kick(ParticleStore& p, double h_s) {
   const double* mass = p.mass_kg().data();
   const double* rad = p.radius_m().data();
   if (!p.drag_used() && !p.external_used()) {
+#pragma omp parallel if (n > omp_min_particles)
     for (int a = 0; a < 3; ++a) {
       contact_kick_axis(n, h_s, mass, rad, p.velocity_m_s()[a].data(), p.force_N()[a].data(),
                         p.angular_velocity_rad_s()[a].data(), p.torque_Nm()[a].data());
@@ -51,6 +53,7 @@ void exponential_half_kick(ParticleStore& p, double h_s) {
   }
   const ParticleStore& cp = p;   // const access: reading does not switch terms on
   if (!p.drag_used()) {
+#pragma omp parallel if (n > omp_min_particles)
     for (int a = 0; a < 3; ++a) {
       plain_kick_axis(n, h_s, mass, rad, p.velocity_m_s()[a].data(), p.force_N()[a].data(),
                       cp.external_force_N()[a].data(), p.angular_velocity_rad_s()[a].data(), p.torque_Nm()[a].data(),
@@ -85,10 +88,11 @@ void exponential_half_kick(ParticleStore& p, double h_s) {
 
 void drift(ParticleStore& p, double dt_s) {
   const auto n = static_cast<std::int64_t>(p.n_owned());
+#pragma omp parallel if (n > omp_min_particles)
   for (int a = 0; a < 3; ++a) {
     double* __restrict__ x = p.position_m()[a].data();
     const double* __restrict__ v = p.velocity_m_s()[a].data();
-#pragma omp parallel for simd schedule(static) if (n > omp_min_particles)
+#pragma omp for simd schedule(static) nowait
     for (std::int64_t i = 0; i < n; ++i) x[i] += dt_s * v[i];
   }
 }

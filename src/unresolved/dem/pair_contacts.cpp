@@ -52,11 +52,11 @@ std::size_t PairContacts::compute(ParticleStore& p, NeighborList& list, double d
   auto& tq = p.torque_Nm();
   const int n_threads =
       static_cast<std::int64_t>(list.n_owned()) > omp_min_particles ? omp_get_max_threads() : 1;
-  for (int a = 0; a < 3; ++a) {
-    std::fill(f[a].begin(), f[a].end(), 0.0);
-    std::fill(tq[a].begin(), tq[a].end(), 0.0);
-  }
   if (n_threads == 1) {
+    for (int a = 0; a < 3; ++a) {
+      std::fill(f[a].begin(), f[a].end(), 0.0);
+      std::fill(tq[a].begin(), tq[a].end(), 0.0);
+    }
     return compute_range(p, list, dt_s, 0, list.n_owned(),
                          {f[0].data(), f[1].data(), f[2].data(), tq[0].data(), tq[1].data(), tq[2].data()});
   }
@@ -79,13 +79,15 @@ std::size_t PairContacts::compute(ParticleStore& p, NeighborList& list, double d
                               {b[0].data(), b[1].data(), b[2].data(), b[3].data(), b[4].data(), b[5].data()});
 #pragma omp barrier
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n_all; ++k) {
+    for (std::size_t k = 0; k < n_all; ++k) {   // assigns: the sum of the buffers that touched k, else 0
+      double sum[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
       for (std::size_t s = 0; s < ranges_.size(); ++s) {
         if (!ranges_[s].touches(k)) continue;
-        for (int a = 0; a < 3; ++a) {
-          f[a][k] += buffers_[s][static_cast<std::size_t>(a)][k];
-          tq[a][k] += buffers_[s][static_cast<std::size_t>(a) + 3][k];
-        }
+        for (std::size_t a = 0; a < 6; ++a) sum[a] += buffers_[s][a][k];
+      }
+      for (std::size_t a = 0; a < 3; ++a) {
+        f[a][k] = sum[a];
+        tq[a][k] = sum[a + 3];
       }
     }
   }
