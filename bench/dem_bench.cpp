@@ -147,6 +147,7 @@ int run_dem_bench(const hs::common::TaskOptions& options) {
   fmt::print("DEM bench: {} x {} x {} Hertz spheres (in.rbcpack), {} settling + {} x {} timed steps; timings taken "
              "on this machine as it is (not valid under load)\n", spec.nx, spec.ny, spec.nz, spec.settle_steps,
              repetitions, spec.timed_steps);
+  std::fflush(stdout);
   DemSystem dem = make_pack(spec);
   omp_set_num_threads(max_threads);
   for (int step = 0; step < spec.settle_steps; ++step) dem.step();
@@ -158,6 +159,7 @@ int run_dem_bench(const hs::common::TaskOptions& options) {
              repetitions, fmt::join(two.ns_per_particle_step, ", "));
   fmt::print("  contacts per particle {:.2f}, neighbour-list builds in the timed runs {}\n", two.contacts_per_particle,
              one.list_builds + two.list_builds);
+  std::fflush(stdout);
 
   std::vector<double> lig1, lig2;
   std::string note;
