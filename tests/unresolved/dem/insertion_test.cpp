@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <numbers>
 
 #include "common/errors.hpp"
@@ -75,6 +76,7 @@ TEST(Insertion, ImpossibleHematocritNamesValueAndMaximum) {
     FAIL() << "no error";
   } catch (const hs::common::ConfigError& e) {
     const std::string m = e.what();
+    std::cout << "measured: message: " << m << "\n";
     EXPECT_NE(m.find("hematocrit = 0.7"), std::string::npos) << m;
     EXPECT_NE(m.find("at most"), std::string::npos) << m;
     EXPECT_NE(m.find("hematocrit <= 0."), std::string::npos) << m;

@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 
 #include "dem_test_helpers.hpp"
@@ -62,6 +63,8 @@ void expect_conserved(int threads, int n_side, int steps) {
   // Round-off: 1500 steps x ~1500 pair forces, each exactly antisymmetric; sums of doubles lose ~1e-16 relative
   // per operation, so 1e-12 of the momentum scale is far above round-off and far below any real force error.
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(m1.total[a], m0.total[a], 1e-12 * m0.scale) << "axis " << a;
+  std::cout << "measured: |P - P0| / sum m|v| = "
+            << norm(m1.total - m0.total) / m0.scale << " after " << steps << " steps, " << threads << " thread(s)\n";
   // The pack really exchanged momentum (damped contacts took energy out).
   EXPECT_LT(m1.scale, 0.97 * m0.scale);
 }
