@@ -63,12 +63,20 @@ void DemSystem::initialize() {
   particles_.clear_ghosts();
   list_ = NeighborList(settings_.params.skin_m);
   rebuild();
-  compute_forces();
+  if (!restoring_) compute_forces();   // a restart keeps the checkpointed forces (their springs are already updated)
+  restoring_ = false;
   initialized_ = true;
 }
 
+void DemSystem::restore_contact_history(ContactHistory history) {
+  pending_history_ = std::move(history);
+  restoring_ = true;
+  initialized_ = false;
+}
+
 void DemSystem::rebuild() {
-  const ContactHistory history = list_.extract_history(particles_);
+  const ContactHistory history = restoring_ ? std::move(pending_history_) : list_.extract_history(particles_);
+  pending_history_ = {};
   particles_.clear_ghosts();
   double r_max = 0.0;
   for (std::size_t i = 0; i < particles_.n_owned(); ++i) r_max = std::max(r_max, particles_.radius_m()[i]);

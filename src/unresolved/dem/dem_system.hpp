@@ -65,6 +65,12 @@ class DemSystem {
   void initialize();
   /// One DEM step of time_step_s().
   void step();
+  /// Contact springs of the current list (for checkpoints), keyed by particle ids.
+  [[nodiscard]] ContactHistory contact_history() const { return list_.extract_history(particles_); }
+  /// Restart: the next initialize() uses these springs and keeps the forces now in particles() (read from a
+  /// checkpoint) instead of evaluating them, so the run continues as if never stopped (up to round-off).
+  void restore_contact_history(ContactHistory history);
+
   /// Re-evaluates the Hertz-time check with a measured relative speed (NumericalError if violated).
   void check_time_step_at(double max_relative_speed_m_s) const;
   [[nodiscard]] double max_speed_m_s() const;
@@ -84,6 +90,8 @@ class DemSystem {
   DemStepStats stats_;
   double ghost_width_m_ = 0.0;
   bool initialized_ = false;
+  bool restoring_ = false;
+  ContactHistory pending_history_;
 };
 
 }  // namespace hs::unresolved

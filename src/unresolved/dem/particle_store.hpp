@@ -81,6 +81,7 @@ class ParticleStore {
   const Vec3Columns& fluid_velocity_m_s() const { return fluid_vel_; }
   const Vec3Columns& drag_impulse_N_s() const { return drag_impulse_; }
   const Column& deformation_index() const { return di_; }
+  const Vec3Columns& wall_shear_m() const { return wall_shear_; }
 
   /// Reorders the owned particles: new particle k is old particle order[k]. Requires no ghosts.
   void permute_owned(const std::vector<std::size_t>& order);
