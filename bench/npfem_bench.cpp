@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "bench/npfem_bench.hpp"
 #include "common/case_request.hpp"
 #include "common/run_folder.hpp"
 #include "resolved/membrane/npfem_solver.hpp"

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The single list of benchmarks `hemoscale bench NAME` runs: one line per benchmark.
 #include "app/registry.hpp"
+#include "bench/dem_bench.hpp"
 #include "bench/lbm_bench.hpp"
-
-namespace hs::resolved { int bench_npfem(const hs::common::TaskOptions& options); }
+#include "bench/npfem_bench.hpp"
 
 namespace hs::app {
 
@@ -11,6 +11,7 @@ std::map<std::string, TaskEntry> benchmarks() {
   std::map<std::string, TaskEntry> r;
   r["lbm"] = {"lattice Boltzmann MLUPS vs the memory-bandwidth roofline (128^3 box, 50 um tube)", hs::bench::run_lbm_bench};
   r["npfem"] = {"npFEM membrane step at 258 and 642 vertices (us/step, us/iteration, factorisation)", hs::resolved::bench_npfem};
+  r["dem"] = {"DEM ns per particle-step, 1e5 Hertz spheres (in.rbcpack), vs LIGGGHTS", hs::bench::run_dem_bench};
   return r;
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The single list of validations `hemoscale validate NAME` runs: one line per validation.
 #include "app/registry.hpp"
+#include "validate/stretching_validation.hpp"
 
-namespace hs::resolved { int validate_stretching(const hs::common::TaskOptions& options); }
 
 namespace hs::app {
 

@@ -3,6 +3,7 @@
 // Default membrane parameters (one set for all forces), 2 um contact patches, all 13 force levels at 258 vertices
 // and, for mesh independence, at 642 vertices (--quick: 3 levels, 258 only). Acceptance: axial and transverse
 // diameters inside the experimental band (lower-upper) at every level.
+#include "validate/stretching_validation.hpp"
 #include <cstdio>
 #include <vector>
 

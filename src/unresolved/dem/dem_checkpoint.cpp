@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// DEM checkpoint format: magic, counts, then each owned column as raw little-endian doubles, ids, springs.
+#include "unresolved/dem/dem_checkpoint.hpp"
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/io/atomic_file.hpp"
+
+namespace hs::unresolved {
+namespace {
+
+constexpr std::array<char, 8> magic = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '1'};
+
+/// The columns in file order; the same list for writing and reading.
+template <typename Store, typename F>
+void for_each_saved_column(Store& p, F&& f) {
+  for (auto* v3 : {&p.position_m(), &p.velocity_m_s(), &p.angular_velocity_rad_s(), &p.force_N(), &p.torque_Nm(),
+                   &p.external_force_N(), &p.external_torque_Nm(), &p.fluid_velocity_m_s(), &p.drag_impulse_N_s(),
+                   &p.wall_shear_m()}) {
+    for (auto& c : *v3) f(c);
+  }
+  for (auto* c : {&p.radius_m(), &p.mass_kg(), &p.drag_coefficient_N_s_m(), &p.deformation_index()}) f(*c);
+}
+
+template <typename T>
+void put(std::ostream& out, const T* data, std::size_t n) {
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(n * sizeof(T)));
+}
+
+template <typename T>
+void get(std::istream& in, T* data, std::size_t n, const std::filesystem::path& file) {
+  in.read(reinterpret_cast<char*>(data), static_cast<std::streamsize>(n * sizeof(T)));
+  if (!in) throw hs::common::ConfigError(fmt::format("{}: DEM checkpoint is truncated", file.string()));
+}
+
+}  // namespace
+
+void write_dem_checkpoint(const DemSystem& dem, const std::filesystem::path& file) {
+  const ParticleStore& p = dem.particles();
+  const ContactHistory h = dem.contact_history();
+  const std::uint64_t counts[2] = {p.n_owned(), h.keys.size()};
+  hs::common::write_file_atomic(file, [&](std::ostream& out) {
+    put(out, magic.data(), magic.size());
+    put(out, counts, 2);
+    for_each_saved_column(p, [&](const std::vector<double>& c) { put(out, c.data(), p.n_owned()); });
+    put(out, p.id().data(), p.n_owned());
+    for (std::size_t k = 0; k < h.keys.size(); ++k) {
+      const std::int64_t ids[2] = {h.keys[k].first, h.keys[k].second};
+      put(out, ids, 2);
+      put(out, h.shear_m[k].data(), 3);
+    }
+  });
+}
+
+void read_dem_checkpoint(DemSystem& dem, const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::array<char, 8> head{};
+  if (!in) throw hs::common::ConfigError(fmt::format("{}: cannot open the DEM checkpoint", file.string()));
+  get(in, head.data(), head.size(), file);
+  if (head != magic) throw hs::common::ConfigError(fmt::format("{}: not a hemoscale DEM checkpoint", file.string()));
+  std::uint64_t counts[2] = {0, 0};
+  get(in, counts, 2, file);
+  ParticleStore& p = dem.particles();
+  p = ParticleStore{};
+  for (std::uint64_t i = 0; i < counts[0]; ++i) p.add({});
+  for_each_saved_column(p, [&](std::vector<double>& c) { get(in, c.data(), counts[0], file); });
+  get(in, p.id().data(), counts[0], file);
+  ContactHistory h;
+  for (std::uint64_t k = 0; k < counts[1]; ++k) {
+    std::int64_t ids[2];
+    std::array<double, 3> s{};
+    get(in, ids, 2, file);
+    get(in, s.data(), 3, file);
+    h.keys.emplace_back(ids[0], ids[1]);
+    h.shear_m.push_back(s);
+  }
+  dem.restore_contact_history(std::move(h));
+}
+
+}  // namespace hs::unresolved

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// One DEM block: particles, neighbour list, contacts, walls, periodic halo and the time step, as named stages.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "common/geometry/shape.hpp"
+#include "unresolved/dem/domain.hpp"
+#include "unresolved/dem/hertz_contact_law.hpp"
+#include "unresolved/dem/neighbor_list.hpp"
+#include "unresolved/dem/pair_contacts.hpp"
+#include "unresolved/dem/particle_params.hpp"
+#include "unresolved/dem/particle_store.hpp"
+#include "unresolved/dem/wall_contacts.hpp"
+
+namespace hs::unresolved {
+
+struct DemSettings {
+  ParticleParams params;
+  Domain domain;
+  double time_step_s;
+};
+
+/// Counters of the last step (diagnostics and benchmarks).
+struct DemStepStats {
+  std::size_t pair_contacts = 0;
+  std::size_t wall_contacts = 0;
+  std::size_t list_builds = 0;   // since construction
+};
+
+/// Advances the particles of one block by velocity Verlet (exact in the linear drag, see exponential_verlet.hpp):
+///   half kick -> drift -> [rebuild: wrap, cell sort, periodic ghosts, neighbour list, wall candidates | ghost
+///   update] -> forces: pairs, ghost fold, walls, hook -> half kick (which adds external_force_N()).
+/// Owned particles are re-sorted at list rebuilds: hold on to id(), not to indices, across steps.
+/// The coupling reads and writes per-particle data through particles() (external force, drag coefficient,
+/// fluid velocity, drag impulse, DI); after adding or removing particles call particles_changed().
+class DemSystem {
+ public:
+  /// Throws ConfigError when the time step violates 0.1 min(t_Rayleigh, t_Hertz) or a periodic length is below
+  /// two neighbour cut-offs. `walls` (may be null) must outlive the system.
+  DemSystem(const DemSettings& settings, const hs::common::Shape* walls);
+
+  ParticleStore& particles() { return particles_; }
+  [[nodiscard]] const ParticleStore& particles() const { return particles_; }
+  [[nodiscard]] const ParticleParams& params() const { return settings_.params; }
+  [[nodiscard]] const Domain& domain() const { return settings_.domain; }
+  [[nodiscard]] double time_step_s() const { return settings_.time_step_s; }
+  [[nodiscard]] const NeighborList& neighbor_list() const { return list_; }
+  [[nodiscard]] const DemStepStats& stats() const { return stats_; }
+
+  /// Adds an owned particle of the configured size and density (id = running count unless given).
+  std::size_t add_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s = {},
+                           std::optional<std::int64_t> id = std::nullopt);
+  /// Call after changing particles() structurally (added/removed particles, moved positions by hand).
+  void particles_changed() { initialized_ = false; }
+  /// Called in every force evaluation after contacts, before the second half kick: may add to force_N() and
+  /// torque_Nm() of owned particles (e.g. forces that depend on the current positions).
+  void set_force_hook(std::function<void(ParticleStore&)> hook) { hook_ = std::move(hook); }
+
+  /// Checks particles against the walls (ConfigError for a centre outside the geometry), builds the lists and
+  /// evaluates the forces. step() calls it when needed.
+  void initialize();
+  /// One DEM step of time_step_s().
+  void step();
+  /// Contact springs of the current list (for checkpoints), keyed by particle ids.
+  [[nodiscard]] ContactHistory contact_history() const { return list_.extract_history(particles_); }
+  /// Restart: the next initialize() uses these springs and keeps the forces now in particles() (read from a
+  /// checkpoint) instead of evaluating them, so the run continues as if never stopped (up to round-off).
+  void restore_contact_history(ContactHistory history);
+
+  /// Re-evaluates the Hertz-time check with a measured relative speed (NumericalError if violated).
+  void check_time_step_at(double max_relative_speed_m_s) const;
+  [[nodiscard]] double max_speed_m_s() const;
+
+ private:
+  void rebuild();
+  void compute_forces();
+
+  DemSettings settings_;
+  const hs::common::Shape* walls_;
+  HertzContactLaw law_;
+  ParticleStore particles_;
+  NeighborList list_;
+  PairContacts pairs_;
+  std::unique_ptr<WallContacts> wall_contacts_;
+  std::function<void(ParticleStore&)> hook_;
+  DemStepStats stats_;
+  double ghost_width_m_ = 0.0;
+  bool initialized_ = false;
+  bool restoring_ = false;
+  ContactHistory pending_history_;
+};
+
+}  // namespace hs::unresolved

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// Structure-of-arrays particle storage: adding, sorting and the periodic-image (ghost) halo.
+#include "unresolved/dem/particle_store.hpp"
+
+#include <stdexcept>
+
+namespace hs::unresolved {
+
+template <typename F>
+void ParticleStore::for_each_column(F&& f) {
+  for (auto* v3 : {&pos_, &vel_, &omega_, &force_, &torque_, &ext_force_, &ext_torque_, &fluid_vel_,
+                   &drag_impulse_, &wall_shear_}) {
+    for (auto& c : *v3) f(c);
+  }
+  for (auto* c : {&radius_, &mass_, &drag_beta_, &di_}) f(*c);
+}
+
+void ParticleStore::resize(std::size_t n) {
+  for_each_column([n](Column& c) { c.resize(n, 0.0); });
+  id_.resize(n, 0);
+}
+
+std::size_t ParticleStore::add(const ParticleState& p) {
+  clear_ghosts();
+  const std::size_t i = n_owned_;
+  resize(i + 1);
+  ++n_owned_;
+  for (int a = 0; a < 3; ++a) {
+    pos_[a][i] = p.position_m[a];
+    vel_[a][i] = p.velocity_m_s[a];
+    omega_[a][i] = p.angular_velocity_rad_s[a];
+  }
+  radius_[i] = p.radius_m;
+  mass_[i] = p.mass_kg;
+  id_[i] = p.id;
+  return i;
+}
+
+ParticleState ParticleStore::state(std::size_t i) const {
+  ParticleState p;
+  for (int a = 0; a < 3; ++a) {
+    p.position_m[a] = pos_[a][i];
+    p.velocity_m_s[a] = vel_[a][i];
+    p.angular_velocity_rad_s[a] = omega_[a][i];
+  }
+  p.radius_m = radius_[i];
+  p.mass_kg = mass_[i];
+  p.id = id_[i];
+  return p;
+}
+
+void ParticleStore::permute_owned(const std::vector<std::size_t>& order) {
+  if (n_ghost() != 0 || order.size() != n_owned_) throw std::logic_error("permute_owned: ghosts present or bad order");
+  Column tmp(n_owned_);
+  for_each_column([&](Column& c) {
+    for (std::size_t k = 0; k < n_owned_; ++k) tmp[k] = c[order[k]];
+    c.swap(tmp);
+  });
+  std::vector<std::int64_t> ids(n_owned_);
+  for (std::size_t k = 0; k < n_owned_; ++k) ids[k] = id_[order[k]];
+  id_.swap(ids);
+}
+
+void ParticleStore::clear_ghosts() {
+  resize(n_owned_);
+  ghost_owner_.clear();
+  ghost_shift_.clear();
+}
+
+std::size_t ParticleStore::add_ghost(std::size_t owner, const hs::common::Vec3& shift_m) {
+  const std::size_t g = size();
+  resize(g + 1);
+  ghost_owner_.push_back(owner);
+  ghost_shift_.push_back(shift_m);
+  radius_[g] = radius_[owner];
+  mass_[g] = mass_[owner];
+  id_[g] = id_[owner];
+  for (int a = 0; a < 3; ++a) pos_[a][g] = pos_[a][owner] + shift_m[a];
+  return g;
+}
+
+void ParticleStore::update_ghosts() {
+  const std::size_t n_ghosts = n_ghost();
+  for (std::size_t k = 0; k < n_ghosts; ++k) {
+    const std::size_t g = n_owned_ + k;
+    const std::size_t o = ghost_owner_[k];
+    for (int a = 0; a < 3; ++a) {
+      pos_[a][g] = pos_[a][o] + ghost_shift_[k][a];
+      vel_[a][g] = vel_[a][o];
+      omega_[a][g] = omega_[a][o];
+    }
+  }
+}
+
+void ParticleStore::fold_ghost_forces() {
+  const std::size_t n_ghosts = n_ghost();
+  for (std::size_t k = 0; k < n_ghosts; ++k) {
+    const std::size_t g = n_owned_ + k;
+    const std::size_t o = ghost_owner_[k];
+    for (int a = 0; a < 3; ++a) {
+      force_[a][o] += force_[a][g];
+      torque_[a][o] += torque_[a][g];
+      force_[a][g] = 0.0;
+      torque_[a][g] = 0.0;
+    }
+  }
+}
+
+}  // namespace hs::unresolved

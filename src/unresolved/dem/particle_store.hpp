@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+// Particle data as a structure of arrays: owned particles first, then ghost copies near block faces.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "common/vec3.hpp"
+
+namespace hs::unresolved {
+
+/// One particle as handed in by insertion or a case (SI units).
+struct ParticleState {
+  hs::common::Vec3 position_m;
+  hs::common::Vec3 velocity_m_s;
+  hs::common::Vec3 angular_velocity_rad_s;
+  double radius_m = 0.0;
+  double mass_kg = 0.0;
+  std::int64_t id = 0;
+};
+
+/// Structure of arrays. Indices [0, n_owned()) are the particles this block owns and integrates;
+/// [n_owned(), size()) are ghosts: copies of particles (periodic images here, particles of neighbour blocks
+/// once the run is distributed) that only take part in contacts. A ghost carries its owner's id; forces
+/// computed on a ghost are added back to its owner by fold_ghost_forces() (the reverse halo exchange).
+/// Per-particle coupling data (external force, drag coefficient, fluid velocity, drag impulse, DI) and the
+/// wall-contact history live here too, so that sorting and (later) migration carry them along.
+class ParticleStore {
+ public:
+  using Column = std::vector<double>;
+  using Vec3Columns = std::array<Column, 3>;
+
+  /// Appends an owned particle; removes all ghosts first.
+  std::size_t add(const ParticleState& p);
+  [[nodiscard]] ParticleState state(std::size_t i) const;
+
+  [[nodiscard]] std::size_t n_owned() const { return n_owned_; }
+  [[nodiscard]] std::size_t size() const { return id_.size(); }
+  [[nodiscard]] std::size_t n_ghost() const { return size() - n_owned_; }
+
+  // Kinematics and contact forces, owned + ghosts. Axis a = 0, 1, 2.
+  Vec3Columns& position_m() { return pos_; }
+  Vec3Columns& velocity_m_s() { return vel_; }
+  Vec3Columns& angular_velocity_rad_s() { return omega_; }
+  Vec3Columns& force_N() { return force_; }
+  Vec3Columns& torque_Nm() { return torque_; }
+  Column& radius_m() { return radius_; }
+  Column& mass_kg() { return mass_; }
+  std::vector<std::int64_t>& id() { return id_; }
+  const Vec3Columns& position_m() const { return pos_; }
+  const Vec3Columns& velocity_m_s() const { return vel_; }
+  const Vec3Columns& angular_velocity_rad_s() const { return omega_; }
+  const Vec3Columns& force_N() const { return force_; }
+  const Vec3Columns& torque_Nm() const { return torque_; }
+  const Column& radius_m() const { return radius_; }
+  const Column& mass_kg() const { return mass_; }
+  const std::vector<std::int64_t>& id() const { return id_; }
+
+  // Coupling data (meaningful for owned particles).
+  /// Constant external force and torque added every step until changed (fluid pressure, lift, gravity...).
+  /// Asking for them writable switches the term on in the integrator (untouched, they cost no memory traffic).
+  Vec3Columns& external_force_N() { external_used_ = true; return ext_force_; }
+  Vec3Columns& external_torque_Nm() { external_used_ = true; return ext_torque_; }
+  /// Linear drag beta (u_f - v), integrated exactly: beta in N s/m, u_f the fluid velocity at the particle.
+  /// Asking for beta writable switches the exact-drag integrator on.
+  Column& drag_coefficient_N_s_m() { drag_used_ = true; return drag_beta_; }
+  [[nodiscard]] bool external_used() const { return external_used_; }
+  [[nodiscard]] bool drag_used() const { return drag_used_; }
+  Vec3Columns& fluid_velocity_m_s() { return fluid_vel_; }
+  /// Drag impulse (N s) given to each particle since the coupling last zeroed it: the fluid gets minus this.
+  Vec3Columns& drag_impulse_N_s() { return drag_impulse_; }
+  /// Deformation index DI of the RBC each sphere stands for (set by the coupling's closures; output only).
+  Column& deformation_index() { return di_; }
+  /// Tangential spring of the particle-wall contact (m), zero when not touching the wall.
+  Vec3Columns& wall_shear_m() { return wall_shear_; }
+  const Vec3Columns& external_force_N() const { return ext_force_; }
+  const Vec3Columns& external_torque_Nm() const { return ext_torque_; }
+  const Column& drag_coefficient_N_s_m() const { return drag_beta_; }
+  const Vec3Columns& fluid_velocity_m_s() const { return fluid_vel_; }
+  const Vec3Columns& drag_impulse_N_s() const { return drag_impulse_; }
+  const Column& deformation_index() const { return di_; }
+  const Vec3Columns& wall_shear_m() const { return wall_shear_; }
+
+  /// Reorders the owned particles: new particle k is old particle order[k]. Requires no ghosts.
+  void permute_owned(const std::vector<std::size_t>& order);
+
+  void clear_ghosts();
+  /// Appends a ghost: a copy of owned particle `owner` displaced by `shift_m` (a periodic image).
+  std::size_t add_ghost(std::size_t owner, const hs::common::Vec3& shift_m);
+  [[nodiscard]] std::size_t ghost_owner(std::size_t ghost) const { return ghost_owner_[ghost - n_owned_]; }
+  [[nodiscard]] const hs::common::Vec3& ghost_shift_m(std::size_t ghost) const { return ghost_shift_[ghost - n_owned_]; }
+  /// Copies position (+ shift), velocity and angular velocity from the owners (the forward halo exchange).
+  void update_ghosts();
+  /// Adds the forces and torques accumulated on ghosts to their owners (the reverse halo exchange).
+  void fold_ghost_forces();
+
+ private:
+  template <typename F>
+  void for_each_column(F&& f);
+  void resize(std::size_t n);
+
+  std::size_t n_owned_ = 0;
+  bool external_used_ = false;
+  bool drag_used_ = false;
+  Vec3Columns pos_, vel_, omega_, force_, torque_;
+  Column radius_, mass_;
+  std::vector<std::int64_t> id_;
+  Vec3Columns ext_force_, ext_torque_, fluid_vel_, drag_impulse_, wall_shear_;
+  Column drag_beta_, di_;
+  std::vector<std::size_t> ghost_owner_;
+  std::vector<hs::common::Vec3> ghost_shift_;
+};
+
+}  // namespace hs::unresolved
