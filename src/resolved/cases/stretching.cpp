@@ -14,6 +14,7 @@
 #include "common/io/csv_writer.hpp"
 #include "common/io/vtk_polydata.hpp"
 #include "common/log.hpp"
+#include "common/run_context.hpp"
 #include "common/run_folder.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
 #include "resolved/membrane/mesh_io.hpp"
@@ -51,11 +52,6 @@ StretchingCase parse_case(const hs::common::CaseRequest& request) {
   return c;
 }
 
-hs::common::RunFolder make_run_folder(const hs::common::CaseRequest& request) {
-  if (request.output_dir) return hs::common::RunFolder::create_exact(*request.output_dir);
-  return hs::common::RunFolder::create_new(request.case_dir / "runs");
-}
-
 void plot(const hs::common::RunFolder& run, const std::filesystem::path& reference_csv, hs::common::Log& log) {
   const std::filesystem::path script = std::filesystem::path(HS_TOOLS_DIR) / "plot_stretching.py";
   if (!std::filesystem::exists("/usr/bin/python3") || !std::filesystem::exists(script)) return;
@@ -70,10 +66,9 @@ void plot(const hs::common::RunFolder& run, const std::filesystem::path& referen
 int run_stretching(const hs::common::CaseRequest& request) {
   const StretchingCase c = parse_case(request);
   const TriangleMesh mesh = build_membrane_mesh(c.membrane);   // bad meshes fail before any output is written
-  const hs::common::RunFolder run = make_run_folder(request);
-  request.config->write_resolved(run.file("case.resolved.toml"));
-  hs::common::Log log;
-  log.open_file(run.file("log.txt"));
+  hs::common::RunContext ctx = hs::common::RunContext::start(request, "stretching");
+  const hs::common::RunFolder& run = ctx.folder();
+  hs::common::Log& log = ctx.log();
   log.set_quiet(request.quiet);
   write_mesh_obj(mesh, run.file("rest_mesh.obj"));
   StretchingExperiment experiment(mesh, c.membrane.material, c.membrane.solver, c.setup);
@@ -109,11 +104,10 @@ int run_stretching(const hs::common::CaseRequest& request) {
                       {"inside_band", inside}, {"steady", p.steady}, {"area_change", p.area_change},
                       {"volume_change", p.volume_change}, {"steps", p.steps}, {"iterations", p.iterations}});
   }
-  nlohmann::json summary = {{"case", "stretching"}, {"provenance", hs::common::provenance()},
-                            {"mesh", to_json(mesh_quality(mesh))}, {"levels", levels}, {"all_inside_band", all_good},
+  nlohmann::json summary = {{"mesh", to_json(mesh_quality(mesh))}, {"levels", levels}, {"all_inside_band", all_good},
                             {"npfem_factorisation_s", experiment.solver().statistics().factorisation_s},
                             {"reference", c.reference_csv.string()}};
-  hs::common::write_json(run.file("summary.json"), summary);
+  ctx.write_summary(summary);
   plot(run, c.reference_csv, log);
   log.info("stretching: {} -> {}", all_good ? "all levels inside the Mills band" : "some levels OUTSIDE the band",
            run.path().string());

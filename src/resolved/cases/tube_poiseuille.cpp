@@ -24,6 +24,7 @@
 #include "common/parallel/gather.hpp"
 #include "common/parallel/reductions.hpp"
 #include "common/progress.hpp"
+#include "common/run_context.hpp"
 #include "common/run_folder.hpp"
 #include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
@@ -127,8 +128,9 @@ Outcome run_to_steady_state(FluidLattice& lattice, const TubePoiseuilleConfig& c
 }
 
 /// Compares with Poiseuille, writes summary.json, prints the check and where the outputs went; returns the exit code.
-int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, const Outcome& out, double wall_s,
-           const common::RunFolder* run, common::Log& log) {
+int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, const Outcome& out,
+           common::RunContext& ctx) {
+  common::Log& log = ctx.log();
   const double dx3_dt = units.dx_m() * units.dx_m() * units.dx_m() / units.dt_s();
   const double u_max = units.to_si_velocity(out.obs.u_max_lu);
   const double q = out.obs.flow_rate_lu * dx3_dt;
@@ -141,9 +143,7 @@ int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, co
            "(analytic {:.6g}, error {:.3f} %), {} after {} steps: {}",
            u_max, c.u_max_m_s, 100.0 * err_u, q, q_exact, 100.0 * err_q,
            out.converged ? "steady" : "NOT converged", out.steps, passed ? "PASSED" : "FAILED");
-  if (run == nullptr) return passed ? 0 : 1;
   nlohmann::json s;
-  s["case"] = "tube-poiseuille";
   s["reynolds"] = c.reynolds;
   s["lattice_mach"] = c.lattice_mach;
   s["tau"] = c.collision.tau;
@@ -162,49 +162,23 @@ int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, co
   s["tolerance_u_max"] = kUMaxTolerance;
   s["tolerance_flow_rate"] = kFlowRateTolerance;
   s["check_passed"] = passed;
-  s["wall_time_s"] = wall_s;
   s["stage_timings"] = out.timings;
-  s["provenance"] = common::provenance();
-  common::write_json(run->file("summary.json"), s);
+  ctx.write_summary(s);
   log.info("outputs: {} (summary.json, timeseries.csv, fields.pvd + vtk/, units.txt, case.resolved.toml, log.txt)",
-           run->path().string());
+           ctx.folder().path().string());
   return passed ? 0 : 1;
-}
-
-/// Rank 0 creates the run folder and writes units.txt, case.resolved.toml and opens log.txt; every rank learns
-/// whether that worked, so a refused folder stops all ranks with the same ConfigError (no rank left waiting).
-std::optional<common::RunFolder> open_run_folder(const common::CaseRequest& request, const common::UnitConverter& units,
-                                                 common::Log& log, int rank) {
-  std::optional<common::RunFolder> run;
-  std::string folder_error;
-  if (rank == 0) {
-    try {
-      run = request.output_dir ? common::RunFolder::create_exact(*request.output_dir)
-                               : common::RunFolder::create_new(request.case_dir / "runs");
-      log.open_file(run->file("log.txt"));
-      units.write(run->file("units.txt"));
-      request.config->write_resolved(run->file("case.resolved.toml"));
-    } catch (const common::ConfigError& e) {
-      folder_error = e.what();
-    }
-  }
-  int failed = folder_error.empty() ? 0 : 1;
-  MPI_Bcast(&failed, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  if (failed != 0) throw common::ConfigError(rank == 0 ? folder_error : "the run folder could not be created on rank 0");
-  return run;
 }
 
 }  // namespace
 
 int run_tube_poiseuille(const common::CaseRequest& request) {
-  const auto start = std::chrono::steady_clock::now();
   const TubePoiseuilleConfig c = read_tube_poiseuille(*request.config, request.quick);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   const auto units = common::UnitConverter::from_relaxation_time(c.dx_m, c.collision.tau, c.kinematic_viscosity_m2_s,
                                                                  c.density_kg_m3);
-  common::Log log(rank);
-  const std::optional<common::RunFolder> run = open_run_folder(request, units, log, rank);
+  common::RunContext ctx = common::RunContext::start(request, "tube-poiseuille");
+  const int rank = ctx.rank();
+  if (rank == 0) units.write(ctx.folder().file("units.txt"));
+  common::Log& log = ctx.log();
   const auto nodes = lattice_nodes(c);
   const double centre_lu = 0.5 * (nodes[0] - 1);
   const Vec3 origin_m{-centre_lu * c.dx_m, -centre_lu * c.dx_m, 0.0};
@@ -224,23 +198,23 @@ int run_tube_poiseuille(const common::CaseRequest& request) {
            c.lattice_mach, common::global_sum(static_cast<long>(lattice.wall_link_count()), MPI_COMM_WORLD));
   std::unique_ptr<common::CsvWriter> csv;
   std::unique_ptr<common::PvdSeries> pvd;
-  if (run) {
-    csv = std::make_unique<common::CsvWriter>(run->file("timeseries.csv"),
+  if (rank == 0) {
+    csv = std::make_unique<common::CsvWriter>(ctx.folder().file("timeseries.csv"),
                                               std::vector<std::string>{"time_s", "u_max_m_s", "flow_rate_m3_s"});
-    pvd = std::make_unique<common::PvdSeries>(run->file("fields.pvd"));
+    pvd = std::make_unique<common::PvdSeries>(ctx.folder().file("fields.pvd"));
   }
   // Expected steps: ~12 decay times R^2 / (5.78 nu) of the slowest mode (j_0,1^2 = 5.78), for the ETA only.
   const auto expected = static_cast<long>(12.0 * r_lu * r_lu / (5.78 * c.collision.viscosity_lu())) + 1;
   const long frame_every = std::max(c.check_every_steps, expected / c.vtk_frames);
   int frame = 0;
   long last_frame_step = -1;
-  const common::RunFolder* folder = run ? &*run : nullptr;
+  const common::RunFolder* folder = rank == 0 ? &ctx.folder() : nullptr;
   auto frame_due = [&](long step) {
     if (step % frame_every >= c.check_every_steps) return;
     write_frame(lattice, units, nodes, origin_m, folder, pvd.get(), frame++);
     last_frame_step = step;
   };
-  common::Progress progress("tube-poiseuille", expected, !request.quiet && rank == 0);
+  common::Progress progress("tube-poiseuille", expected, ctx.show_progress());
   common::TimeLoop loop(c.max_steps);
   loop.add("lbm_stream_collide", [&] { lattice.stream_collide(); });
   loop.add("halo_exchange", [&] { lattice.exchange_halos(); });
@@ -248,8 +222,7 @@ int run_tube_poiseuille(const common::CaseRequest& request) {
   const Outcome out = run_to_steady_state(lattice, c, units, nodes[2], frame_due, csv.get(), progress, loop);
   log.info("wall time per stage:\n{}", loop.timing_table());
   if (last_frame_step != out.steps) write_frame(lattice, units, nodes, origin_m, folder, pvd.get(), frame++);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return report(c, units, out, wall_s, folder, log);
+  return report(c, units, out, ctx);
 }
 
 }  // namespace hs::resolved
