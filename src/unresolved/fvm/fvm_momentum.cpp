@@ -55,7 +55,7 @@ void FvmSolver::assemble_momentum(int c, bool convection) {
   const double inv_2v = 0.5 / (h_ * h_ * h_);
   const double g = c == drive_.axis ? drive_gradient_ : 0.0;
   const long sc = eps_.stride(c);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
   for (long r = 0; r < rows; ++r) {
     const long idx = comp.node[static_cast<std::size_t>(r)];
     const double e = face_average(eps_, c, idx);
@@ -68,6 +68,7 @@ void FvmSolver::assemble_momentum(int c, bool convection) {
     const int lid = comp.link_id[static_cast<std::size_t>(r)];
     const auto& slot = comp.slot[static_cast<std::size_t>(r)];
     for (int dir = 0; dir < 6; ++dir) {
+      if (slot[static_cast<std::size_t>(dir) + 1] == -2) continue;
       const double conv = convection ? momentum_cv_flux(c, idx, dir) * inv_2v : 0.0;
       const NodeLink link = lid < 0 ? NodeLink{} : comp.links[static_cast<std::size_t>(lid)][static_cast<std::size_t>(dir)];
       if (link.type == NodeLink::Type::neumann) continue;
@@ -92,7 +93,7 @@ void FvmSolver::solve_momentum(int c) {
   if (rows == 0) return;
   Eigen::VectorXd rhs(rows);
   const long sc = p_.stride(c);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
   for (long r = 0; r < rows; ++r) {
     const long idx = comp.node[static_cast<std::size_t>(r)];
     const double grad_p = (p_[static_cast<std::size_t>(idx)] - p_[static_cast<std::size_t>(idx - sc)]) / h_;

@@ -115,7 +115,7 @@ void FvmSolver::pressure_corrector(bool final) {
   }
   const long rows = static_cast<long>(p_cell_.size());
   const double inv_h = 1.0 / h_;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
   for (long r = 0; r < rows; ++r) {
     const long idx = p_cell_[static_cast<std::size_t>(r)];
     double div = 0.0;
@@ -138,7 +138,7 @@ void FvmSolver::pressure_corrector(bool final) {
     Component& comp = comp_[static_cast<std::size_t>(c)];
     const long n = static_cast<long>(comp.node.size());
     const long sc = p_.stride(c);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
     for (long r = 0; r < n; ++r) {
       const long idx = comp.node[static_cast<std::size_t>(r)];
       const double grad_p = (p_[static_cast<std::size_t>(idx)] - p_[static_cast<std::size_t>(idx - sc)]) * inv_h;

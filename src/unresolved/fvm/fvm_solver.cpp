@@ -111,7 +111,8 @@ void FvmSolver::build_component(int c) {
     for (int dir = 0; dir < 6; ++dir) {
       const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
       const int col = comp.row[static_cast<std::size_t>(nb)];
-      if (col >= 0) comp.slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(dir) + 1] = find(col);
+      // A one-cell periodic axis makes a node its own neighbour: that link contributes nothing (-2).
+      if (col >= 0) comp.slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(dir) + 1] = col == r ? -2 : find(col);
     }
   }
   comp.x = Eigen::VectorXd::Zero(rows);

@@ -16,6 +16,9 @@
 
 namespace hs::unresolved {
 
+/// Loops over fewer unknowns than this run on one thread: an OpenMP fork costs more than the work.
+inline constexpr long kParallelRows = 20000;
+
 struct FluidProperties {
   double density_kg_m3;
   double kinematic_viscosity_m2_s;

@@ -115,7 +115,7 @@ int PressureSolver::solve(const std::vector<double>& b, std::vector<double>& x, 
   if (n == 0) return 0;
   double b2 = 0.0;
   double r2 = 0.0;
-#pragma omp parallel for reduction(+ : b2, r2) schedule(static)
+#pragma omp parallel for reduction(+ : b2, r2) schedule(static) if (n > 20000)
   for (int r = 0; r < n; ++r) {
     double ax = 0.0;
     for (int q = a_.row_ptr[static_cast<std::size_t>(r)]; q < a_.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
