@@ -60,14 +60,25 @@ class BlockField {
     }
   }
 
+  /// Calls fn(flat index) for every point of the plane where axis `axis` has index `along`, ghosts included.
+  template <typename Fn>
+  void for_each_in_plane(int axis, int along, Fn&& fn) const {
+    const int b = (axis + 1) % 3;
+    const int c = (axis + 2) % 3;
+    const long base = (along + 1) * stride_[static_cast<std::size_t>(axis)];
+    for (int q = 0; q < n_[static_cast<std::size_t>(c)] + 3; ++q) {
+      for (int r = 0; r < n_[static_cast<std::size_t>(b)] + 3; ++r) {
+        fn(static_cast<std::size_t>(base + q * stride_[static_cast<std::size_t>(c)] + r * stride_[static_cast<std::size_t>(b)]));
+      }
+    }
+  }
+
   /// Copies the first interior layer into the ghost layer on both sides of a non-periodic `axis`.
   void fill_zero_gradient(int axis) {
     const int n = n_[static_cast<std::size_t>(axis)];
-    for (std::size_t idx = 0; idx < data_.size(); ++idx) {
-      const long along = (static_cast<long>(idx) / stride_[static_cast<std::size_t>(axis)]) % (n + 3) - 1;
-      if (along == -1) data_[idx] = data_[idx + static_cast<std::size_t>(stride_[static_cast<std::size_t>(axis)])];
-      if (along == n) data_[idx] = data_[idx - static_cast<std::size_t>(stride_[static_cast<std::size_t>(axis)])];
-    }
+    const auto st = static_cast<std::size_t>(stride_[static_cast<std::size_t>(axis)]);
+    for_each_in_plane(axis, -1, [&](std::size_t idx) { data_[idx] = data_[idx + st]; });
+    for_each_in_plane(axis, n, [&](std::size_t idx) { data_[idx] = data_[idx - st]; });
   }
 
  private:

@@ -93,15 +93,11 @@ void FvmSolver::fill_pressure_ghosts() {
       continue;
     }
     p_.fill_zero_gradient(a);
-    const long st = p_.stride(a);
     const int na = n[static_cast<std::size_t>(a)];
     for (int hi = 0; hi < 2; ++hi) {
       if (grid_.side(a, hi).type != SideType::pressure_outlet) continue;
       // p = 0 on the outlet face: the ghost mirrors the first cell with opposite sign.
-      for (std::size_t idx = 0; idx < p_.data().size(); ++idx) {
-        const long along = (static_cast<long>(idx) / st) % (na + 3) - 1;
-        if (along == (hi == 1 ? na : -1)) p_[idx] = -p_[idx];
-      }
+      p_.for_each_in_plane(a, hi == 1 ? na : -1, [&](std::size_t idx) { p_[idx] = -p_[idx]; });
     }
   }
 }

@@ -186,13 +186,11 @@ void FvmSolver::fill_velocity_ghosts(int c, BlockField<double>& field) const {
     if (a == c) continue;
     // Tangential component beyond a wall: reflect about the wall value, so interpolation sees u_wall there.
     const int n = grid_.cells()[static_cast<std::size_t>(a)];
-    const long st = field.stride(a);
-    for (std::size_t idx = 0; idx < field.data().size(); ++idx) {
-      const long along = (static_cast<long>(idx) / st) % (n + 3) - 1;
-      if (along != -1 && along != n) continue;
-      const SideCondition& side = grid_.side(a, along == n ? 1 : 0);
+    for (int hi = 0; hi < 2; ++hi) {
+      const SideCondition& side = grid_.side(a, hi);
       if (side.type != SideType::wall) continue;
-      field[idx] = 2.0 * side.wall_velocity_m_s[c] - field[idx];
+      const double wall = 2.0 * side.wall_velocity_m_s[c];
+      field.for_each_in_plane(a, hi == 1 ? n : -1, [&](std::size_t idx) { field[idx] = wall - field[idx]; });
     }
   }
 }
@@ -214,8 +212,16 @@ void FvmSolver::update_fluxes() {
     auto& phi = phi_[static_cast<std::size_t>(c)];
     const auto& u = u_[static_cast<std::size_t>(c)];
     const auto& ap = grid_.apertures(c);
-    for (std::size_t idx = 0; idx < phi.data().size(); ++idx) {
-      phi[idx] = ap[idx] == 0.0 ? 0.0 : face_average(eps_, c, static_cast<long>(idx)) * ap[idx] * area * u[idx];
+    for (int k = 0; k < grid_.node_count(c, 2); ++k) {
+      for (int j = 0; j < grid_.node_count(c, 1); ++j) {
+        for (int i = 0; i < grid_.node_count(c, 0); ++i) {
+          const std::size_t idx = phi.index(i, j, k);
+          phi[idx] = ap[idx] == 0.0 ? 0.0 : face_average(eps_, c, static_cast<long>(idx)) * ap[idx] * area * u[idx];
+        }
+      }
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (grid_.periodic(a)) phi.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
     }
   }
 }
