@@ -182,8 +182,15 @@ void FvmSolver::fill_velocity_ghosts(int c, BlockField<double>& field) const {
       field.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
       continue;
     }
+    if (a == c) {
+      // Normal component: faces 0..n are real nodes, the ghosts are -1 and n + 1 (zero gradient).
+      const int n = grid_.cells()[static_cast<std::size_t>(a)];
+      const auto st = static_cast<std::size_t>(field.stride(a));
+      field.for_each_in_plane(a, -1, [&](std::size_t idx) { field[idx] = field[idx + st]; });
+      field.for_each_in_plane(a, n + 1, [&](std::size_t idx) { field[idx] = field[idx - st]; });
+      continue;
+    }
     field.fill_zero_gradient(a);
-    if (a == c) continue;
     // Tangential component beyond a wall: reflect about the wall value, so interpolation sees u_wall there.
     const int n = grid_.cells()[static_cast<std::size_t>(a)];
     for (int hi = 0; hi < 2; ++hi) {
