@@ -19,6 +19,7 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <omp.h>
 
 #include "common/run_folder.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
@@ -113,6 +114,8 @@ int run_fvm_bench(const hs::common::TaskOptions& options) {
   const int n = options.quick ? 24 : 64;
   const int steps = options.quick ? 8 : 20;
   constexpr int kRepetitions = 3;   // median of 3 (conventions: timings on this machine are bimodal)
+  // One core against icoFoam on one rank (run_cavity3d.sh np = 1): equal resources.
+  omp_set_num_threads(1);
   std::vector<double> ours;
   std::vector<double> ours_p;
   std::vector<double> ours_u;
@@ -127,6 +130,8 @@ int run_fvm_bench(const hs::common::TaskOptions& options) {
               n, steps, median(ours), median(ours_p), median(ours_u));
   nlohmann::json j;
   j["cells"] = n * n * n;
+  j["threads"] = 1;
+  j["openfoam_ranks"] = 1;
   j["steps"] = steps;
   j["fvm_ns_per_cell_step"] = median(ours);
   j["fvm_pressure_iterations_per_step"] = median(ours_p);

@@ -72,6 +72,17 @@ TubePlasmaConfig parse(hs::common::ConfigFile& file, bool quick) {
                                           "(it is {:.4f} cells)", dx, cells_along));
   }
   numerics.derived("dx_m", dx);
+  // Courant check at set-up from the Poiseuille centreline velocity (2 x mean) of the prescribed drive.
+  const double r = 0.5 * c.diameter_m;
+  const double mu = c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s;
+  const double u_max = c.drive.mode == FlowDrive::Mode::flow_rate ? 2.0 * c.drive.flow_rate_m3_s / (std::numbers::pi * r * r)
+                                                                   : -c.drive.pressure_gradient_Pa_m * r * r / (4.0 * mu);
+  const double courant = u_max * c.piso.dt_s / dx;
+  if (courant > c.piso.max_courant) {
+    numerics.fail("dt_s", fmt::format("gives a Courant number {:.3g} > max_courant = {:.3g} at the Poiseuille centreline "
+                                      "velocity {:.4g} m/s; use dt_s <= {:.4g}",
+                                      courant, c.piso.max_courant, u_max, c.piso.dt_s * c.piso.max_courant / courant));
+  }
   if (quick) c.end_time_s = std::min(c.end_time_s, 10.0 * c.piso.dt_s);
   file.finish();
   return c;
