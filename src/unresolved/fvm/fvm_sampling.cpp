@@ -50,6 +50,17 @@ std::array<Vec3, 3> FvmSolver::velocity_gradient_at(const Vec3& x_m) const {
   return g;
 }
 
+Vec3 FvmSolver::viscous_force_density_at(const Vec3& x_m) const {
+  const Vec3 centre = velocity_at(x_m);
+  Vec3 lap;
+  for (int b = 0; b < 3; ++b) {
+    Vec3 d;
+    d[b] = h_;
+    lap += (velocity_at(x_m + d) - 2.0 * centre + velocity_at(x_m - d)) / (h_ * h_);
+  }
+  return fluid_.density_kg_m3 * fluid_.kinematic_viscosity_m2_s * lap;
+}
+
 Vec3 FvmSolver::pressure_gradient_at(const Vec3& x_m) const {
   Vec3 grad;
   // Face-normal gradients live on the velocity nodes: interpolate them as node fields.

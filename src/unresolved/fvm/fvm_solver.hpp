@@ -88,6 +88,9 @@ class FvmSolver {
   [[nodiscard]] hs::common::Vec3 velocity_at(const hs::common::Vec3& x_m) const;
   /// grad u at a point: g[a][b] = d u_a / d x_b, 1/s (central differences of velocity_at over one cell).
   [[nodiscard]] std::array<hs::common::Vec3, 3> velocity_gradient_at(const hs::common::Vec3& x_m) const;
+  /// div(tau) = mu lap(u) at a point, N/m^3 (second differences of velocity_at over one cell): the
+  /// viscous force density the coupling turns into -V_p div(tau) on a particle (model A).
+  [[nodiscard]] hs::common::Vec3 viscous_force_density_at(const hs::common::Vec3& x_m) const;
   /// grad p at a point, Pa/m, including the driving mean gradient.
   [[nodiscard]] hs::common::Vec3 pressure_gradient_at(const hs::common::Vec3& x_m) const;
   /// Cell-centred velocity (mean of the two faces of each component), m/s.

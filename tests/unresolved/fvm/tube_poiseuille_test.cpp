@@ -90,6 +90,20 @@ TEST(TubePoiseuille, NodalVelocityIsExactForTheParabola) {
     }
   }
   EXPECT_LT(worst, 1e-4);
+  // What the coupling reads at a particle position off the nodes: velocity, shear rate, grad p, div tau.
+  const Vec3 x{0.3 * kRadius, 0.2 * kRadius, 1.3 * h};
+  const double r2 = x.x * x.x + x.y * x.y;
+  // Trilinear interpolation of the parabola errs by at most u'' dx^2 / 8 per direction = u_max / 50 here.
+  EXPECT_NEAR(solver.velocity_at(x).z, u_max * (1.0 - r2 / (kRadius * kRadius)), 0.02 * u_max);
+  // Shear rate: differences of the interpolant are first order, |error| <= u'' dx / 2 = 10% of the wall
+  // shear 2 u_max / R at 10 cells across.
+  const auto grad = solver.velocity_gradient_at(x);
+  const double wall_shear = 2.0 * u_max / kRadius;
+  EXPECT_NEAR(grad[2].x, -2.0 * u_max * x.x / (kRadius * kRadius), 0.1 * wall_shear);
+  EXPECT_NEAR(grad[2].y, -2.0 * u_max * x.y / (kRadius * kRadius), 0.1 * wall_shear);
+  // Steady Poiseuille: div tau balances grad p (both -G along z); the pressure gradient is the drive.
+  EXPECT_NEAR(solver.pressure_gradient_at(x).z, kGradient, 1e-6 * -kGradient);
+  EXPECT_NEAR(solver.viscous_force_density_at(x).z / kGradient, 1.0, 0.05);   // second differences, O(dx^2) interp.
 }
 
 TEST(TubePoiseuille, PrescribedFlowRateFindsPoiseuilleGradient) {
