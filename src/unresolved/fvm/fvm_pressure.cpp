@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // FvmSolver: the PISO pressure equation (model A: Laplacian coefficient eps^2 / A) and velocity correction.
 #include <algorithm>
-#include <map>
+#include <array>
 
 #include "unresolved/fvm/fvm_solver.hpp"
 
@@ -48,37 +48,59 @@ void FvmSolver::build_pressure_matrix() {
   a.rows = rows;
   a.row_ptr.assign(static_cast<std::size_t>(rows) + 1, 0);
   const double inv_h2 = 1.0 / (h_ * h_);
-  for (int r = 0; r < rows; ++r) {
-    std::map<int, double> entries;
-    entries[r] = 0.0;
-    if (r != p_ref_row_) {
-      const long idx = p_cell_[static_cast<std::size_t>(r)];
-      for (int ax = 0; ax < 3; ++ax) {
-        const Component& comp = comp_[static_cast<std::size_t>(ax)];
-        const auto& ap = grid_.apertures(ax);
-        const long st = p_row_.stride(ax);
-        for (const int s : {-1, 1}) {
-          const long f = s < 0 ? idx : idx + st;
-          const int urow = comp.row[static_cast<std::size_t>(f)];
-          if (urow < 0) continue;
-          const double e = face_average(eps_, ax, f);
-          const double d = e * e * ap[static_cast<std::size_t>(f)] / comp.a[urow] * inv_h2;
-          const int nrow = p_row_[static_cast<std::size_t>(idx + s * st)];
-          if (nrow == r) continue;                   // a one-cell periodic axis couples a cell to itself
-          if (nrow < 0) {
-            entries[r] += 2.0 * d;                   // outlet face: p = 0 half a cell away
-            continue;
-          }
-          entries[r] += d;
-          if (nrow != p_ref_row_) entries[nrow] -= d;
-        }
+  // At most 7 distinct entries per row (a periodic axis of 1 or 2 cells merges neighbours).
+  struct Entry {
+    int col;
+    double value;
+  };
+  std::array<Entry, 7> entries{};
+  int count = 0;
+  auto add = [&](int col, double v) {
+    for (int q = 0; q < count; ++q) {
+      if (entries[static_cast<std::size_t>(q)].col == col) {
+        entries[static_cast<std::size_t>(q)].value += v;
+        return;
       }
-    } else {
-      entries[r] = 1.0;
     }
-    for (const auto& [col, v] : entries) {
-      a.cols.push_back(col);
-      a.values.push_back(v);
+    entries[static_cast<std::size_t>(count++)] = {col, v};
+  };
+  a.cols.reserve(static_cast<std::size_t>(rows) * 7);
+  a.values.reserve(static_cast<std::size_t>(rows) * 7);
+  for (int r = 0; r < rows; ++r) {
+    count = 0;
+    add(r, r == p_ref_row_ ? 1.0 : 0.0);
+    const long idx = p_cell_[static_cast<std::size_t>(r)];
+    for (int ax = 0; ax < 3 && r != p_ref_row_; ++ax) {
+      const Component& comp = comp_[static_cast<std::size_t>(ax)];
+      const auto& ap = grid_.apertures(ax);
+      const long st = p_row_.stride(ax);
+      for (const int s : {-1, 1}) {
+        const long f = s < 0 ? idx : idx + st;
+        const int urow = comp.row[static_cast<std::size_t>(f)];
+        if (urow < 0) continue;
+        const double e = face_average(eps_, ax, f);
+        const double d = e * e * ap[static_cast<std::size_t>(f)] / comp.a[urow] * inv_h2;
+        const int nrow = p_row_[static_cast<std::size_t>(idx + s * st)];
+        if (nrow == r) continue;                   // a one-cell periodic axis couples a cell to itself
+        if (nrow < 0) {
+          add(r, 2.0 * d);                         // outlet face: p = 0 half a cell away
+          continue;
+        }
+        add(r, d);
+        if (nrow != p_ref_row_) add(nrow, -d);
+      }
+    }
+    // Emit in column order (selection over at most 7 entries).
+    int last = -1;
+    for (int emitted = 0; emitted < count; ++emitted) {
+      int best = -1;
+      for (int q = 0; q < count; ++q) {
+        const int col = entries[static_cast<std::size_t>(q)].col;
+        if (col > last && (best < 0 || col < entries[static_cast<std::size_t>(best)].col)) best = q;
+      }
+      last = entries[static_cast<std::size_t>(best)].col;
+      a.cols.push_back(last);
+      a.values.push_back(entries[static_cast<std::size_t>(best)].value);
     }
     a.row_ptr[static_cast<std::size_t>(r) + 1] = static_cast<int>(a.cols.size());
   }
