@@ -3,6 +3,7 @@
 #include "app/registry.hpp"
 #include "resolved/cases/stretching.hpp"
 #include "resolved/cases/tube_poiseuille.hpp"
+#include "unresolved/cases/tube_plasma.hpp"
 
 namespace hs::app {
 
@@ -10,6 +11,7 @@ std::map<std::string, Entry> case_types() {
   std::map<std::string, Entry> r;
   r["tube-poiseuille"] = {"plasma in a periodic tube, checked against Poiseuille", hs::resolved::run_tube_poiseuille};
   r["stretching"] = {"optical-tweezers stretching of one RBC membrane vs Mills et al. 2004", hs::resolved::run_stretching};
+  r["tube-plasma"] = {"plasma alone in a periodic tube (unresolved FVM), checked against Poiseuille", hs::unresolved::run_tube_plasma};
   return r;
 }
 

@@ -4,6 +4,7 @@
 #include "bench/dem_bench.hpp"
 #include "bench/lbm_bench.hpp"
 #include "bench/npfem_bench.hpp"
+#include "bench/fvm_bench.hpp"
 
 namespace hs::app {
 
@@ -12,6 +13,7 @@ std::map<std::string, TaskEntry> benchmarks() {
   r["lbm"] = {"lattice Boltzmann MLUPS vs the memory-bandwidth roofline (128^3 box, 50 um tube)", hs::bench::run_lbm_bench};
   r["npfem"] = {"npFEM membrane step at 258 and 642 vertices (us/step, us/iteration, factorisation)", hs::resolved::bench_npfem};
   r["dem"] = {"DEM ns per particle-step, 1e5 Hertz spheres (in.rbcpack), vs LIGGGHTS", hs::bench::run_dem_bench};
+  r["fvm"] = {"PISO fluid on the 3D lid-driven cube vs OpenFOAM icoFoam (ns per cell-step)", hs::bench::run_fvm_bench};
   return r;
 }
 

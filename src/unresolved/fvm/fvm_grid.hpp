@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// The Cartesian finite-volume grid over a Shape: staggered (MAC) velocity nodes, cut-cell face apertures
+// and wall distances along grid links, and the boundary condition of each side of the domain box.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "common/geometry/shape.hpp"
+#include "common/vec3.hpp"
+#include "unresolved/fvm/block_field.hpp"
+
+namespace hs::unresolved {
+
+/// What happens at one side of the domain box. Walls of the Shape inside the box are always no-slip.
+enum class SideType : std::uint8_t { periodic, wall, velocity_inlet, pressure_outlet };
+
+struct SideCondition {
+  SideType type = SideType::wall;
+  hs::common::Vec3 wall_velocity_m_s{};                              // wall: tangential (lid) velocity
+  std::function<hs::common::Vec3(const hs::common::Vec3&)> inlet_velocity_m_s;  // velocity_inlet: u(x)
+};
+
+struct FvmGridSpec {
+  hs::common::Box3 box_m;                 // the domain; each extent must be a whole number of cells
+  double dx_m;                            // cubic cells
+  std::array<SideCondition, 6> sides;     // x-, x+, y-, y+, z-, z+ (a periodic axis is periodic on both sides)
+};
+
+/// Kind of a velocity node (the centre of a cell face, normal component only).
+enum class NodeKind : std::uint8_t { solid, active, fixed };
+
+/// How an active velocity node sees one of its six neighbours.
+struct NodeLink {
+  enum class Type : std::uint8_t { active, dirichlet, neumann } type = Type::active;
+  double theta = 1.0;   // dirichlet: fraction of the link (in (0, 1]) at which the wall value holds
+  double value = 0.0;   // dirichlet: the wall (or boundary) velocity component, m/s
+};
+
+/// Why staggered (MAC): on a Cartesian grid the staggered arrangement couples pressure and velocity
+/// without Rhie-Chow interpolation (no checkerboard modes, exact discrete divergence), the face velocity
+/// is itself the flux unknown that the cut-cell apertures multiply, and PISO reduces to a 7-point
+/// pressure Laplacian that algebraic multigrid solves in a few iterations.
+///
+/// Walls: a velocity node is active when its face centre lies in the fluid. The viscous stencil of a node
+/// next to a wall uses the true wall position along each grid link (Shortley & Weller 1938 non-uniform
+/// three-point stencil; the same idea as the ghost-cell method of Gibou et al. 2002, J Comput Phys
+/// 176:205), and the flux through a cut face is its
+/// open area times the velocity at the centroid of the open part, reconstructed linearly from the wall
+/// (aperture(c, ...) below). Both are second order where a staircase wall is first order.
+class FvmGrid {
+ public:
+  FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec);
+
+  [[nodiscard]] double dx_m() const { return dx_m_; }
+  [[nodiscard]] const std::array<int, 3>& cells() const { return n_; }
+  [[nodiscard]] long cell_count() const { return static_cast<long>(n_[0]) * n_[1] * n_[2]; }
+  [[nodiscard]] const hs::common::Vec3& origin_m() const { return lo_; }
+  [[nodiscard]] bool periodic(int axis) const { return periodic_[static_cast<std::size_t>(axis)]; }
+  [[nodiscard]] const SideCondition& side(int axis, int high) const { return spec_.sides[static_cast<std::size_t>(2 * axis + high)]; }
+  [[nodiscard]] const hs::common::Shape& shape() const { return shape_; }
+
+  /// Number of velocity nodes of component c along axis a (faces along c, cells otherwise; a periodic
+  /// axis has its last face identified with the first).
+  [[nodiscard]] int node_count(int c, int a) const;
+  [[nodiscard]] hs::common::Vec3 cell_centre_m(int i, int j, int k) const;
+  [[nodiscard]] hs::common::Vec3 node_position_m(int c, int i, int j, int k) const;
+  /// The cell holding x (periodic axes wrapped), or nothing when x is outside the box.
+  [[nodiscard]] std::optional<std::array<int, 3>> cell_of(const hs::common::Vec3& x_m) const;
+  /// Wraps x into the box along periodic axes.
+  [[nodiscard]] hs::common::Vec3 wrap(const hs::common::Vec3& x_m) const;
+
+  [[nodiscard]] NodeKind kind(int c, int i, int j, int k) const {
+    return static_cast<NodeKind>(kind_[static_cast<std::size_t>(c)](i, j, k));
+  }
+  [[nodiscard]] const BlockField<std::uint8_t>& kinds(int c) const { return kind_[static_cast<std::size_t>(c)]; }
+  /// Prescribed value of a fixed node (wall or inlet face on the box), m/s.
+  [[nodiscard]] const BlockField<double>& fixed_values(int c) const { return fixed_[static_cast<std::size_t>(c)]; }
+  /// Effective aperture of a face (open area fraction x centroid-velocity factor); 0 for solid nodes.
+  [[nodiscard]] const BlockField<double>& apertures(int c) const { return aperture_[static_cast<std::size_t>(c)]; }
+  /// Open area fraction of each face (geometry only, for diagnostics).
+  [[nodiscard]] const BlockField<double>& open_areas(int c) const { return area_[static_cast<std::size_t>(c)]; }
+  /// Fluid volume fraction of each cell (geometry only: 1 inside, 0 in the wall, in between when cut).
+  [[nodiscard]] const BlockField<double>& fluid_fractions() const { return fluid_fraction_; }
+  /// The link of an active node towards direction dir = 2 a + (0: -a, 1: +a) when that neighbour is not active.
+  [[nodiscard]] NodeLink link(int c, std::array<int, 3> node, int dir) const;
+
+ private:
+  void classify_nodes(int c);
+  void compute_apertures(int c);
+  void compute_fluid_fractions();
+  [[nodiscard]] bool in_range(int c, int a, int idx) const;
+
+  const hs::common::Shape& shape_;
+  FvmGridSpec spec_;
+  double dx_m_;
+  hs::common::Vec3 lo_;
+  std::array<int, 3> n_{};
+  std::array<bool, 3> periodic_{};
+  std::array<BlockField<std::uint8_t>, 3> kind_;
+  std::array<BlockField<double>, 3> fixed_;
+  std::array<BlockField<double>, 3> aperture_;
+  std::array<BlockField<double>, 3> area_;
+  BlockField<double> fluid_fraction_;
+};
+
+}  // namespace hs::unresolved

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// FvmSolver: assembly and solution of the momentum equation on the staggered velocity nodes.
+#include <Eigen/IterativeLinearSolvers>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "unresolved/fvm/fvm_solver.hpp"
+
+namespace hs::unresolved {
+
+double FvmSolver::face_average(const BlockField<double>& cell_field, int c, long idx) const {
+  return 0.5 * (cell_field[static_cast<std::size_t>(idx - cell_field.stride(c))] + cell_field[static_cast<std::size_t>(idx)]);
+}
+
+/// Outward volume flux (m^3/s) through the face of the momentum control volume of node idx (component c)
+/// towards direction dir, interpolated from the fluxes of the cell faces that the face straddles.
+double FvmSolver::momentum_cv_flux(int c, long idx, int dir) const {
+  const int a = dir / 2;
+  const bool plus = dir % 2 == 1;
+  const auto& phi = phi_[static_cast<std::size_t>(a)];
+  const long sc = phi.stride(c);
+  const long sa = phi.stride(a);
+  auto at = [&](long i) { return phi[static_cast<std::size_t>(i)]; };
+  if (a == c) return plus ? 0.5 * (at(idx) + at(idx + sc)) : -0.5 * (at(idx - sc) + at(idx));
+  return plus ? 0.5 * (at(idx - sc + sa) + at(idx + sa)) : -0.5 * (at(idx - sc) + at(idx));
+}
+
+/// Factor of nu/dx^2 for link dir of a node (Shortley & Weller 1938): along an axis with neighbours
+/// (or walls) at fractions t1 and t2 of a cell, u'' = 2/(t1 + t2) [(u_1 - u_P)/t1 + (u_2 - u_P)/t2] / dx^2,
+/// which is 1 for the regular stencil. A zero-gradient (outlet) link counts as a full cell.
+double shortley_weller(const auto& comp, int lid, int dir) {
+  if (lid < 0) return 1.0;
+  const auto& links = comp.links[static_cast<std::size_t>(lid)];
+  auto fraction = [&](int d) {
+    const NodeLink& l = links[static_cast<std::size_t>(d)];
+    return l.type == NodeLink::Type::dirichlet ? l.theta : 1.0;
+  };
+  const int axis = dir / 2;
+  return 2.0 / (fraction(dir) * (fraction(2 * axis) + fraction(2 * axis + 1)));
+}
+
+/// Momentum row of node P (per unit mass and volume, implicit Euler, linearised central convection):
+///   (eps/dt + Ksl/rho) u_P + sum_l d_l (u_P - u_l) + sum_l F_l/(2V) (u_l - u_P)
+///     = eps u_P^n/dt + (Ksl Us + f)/rho - eps G,     d_l = eps nu / dx^2 x shortley_weller(l),
+/// where a wall link l holds u_l = u_wall at the fraction theta_l of the link.
+/// The PISO diagonal A is the symmetric part (time, Ksl, viscous); convection goes to H.
+void FvmSolver::assemble_momentum(int c, bool convection) {
+  Component& comp = comp_[static_cast<std::size_t>(c)];
+  const long rows = static_cast<long>(comp.node.size());
+  double* val = comp.m.valuePtr();
+  const double dt = piso_.dt_s;
+  const double rho = fluid_.density_kg_m3;
+  const double nu_h2 = fluid_.kinematic_viscosity_m2_s / (h_ * h_);
+  const double inv_2v = 0.5 / (h_ * h_ * h_);
+  const double g = c == drive_.axis ? drive_gradient_ : 0.0;
+  const long sc = eps_.stride(c);
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
+  for (long r = 0; r < rows; ++r) {
+    const long idx = comp.node[static_cast<std::size_t>(r)];
+    const double e = face_average(eps_, c, idx);
+    const double ks = face_average(ksl_, c, idx);
+    const double us = 0.5 * (us_[static_cast<std::size_t>(idx - sc)][c] + us_[static_cast<std::size_t>(idx)][c]);
+    const double f = 0.5 * (force_[static_cast<std::size_t>(idx - sc)][c] + force_[static_cast<std::size_t>(idx)][c]);
+    double diag = e / dt + ks / rho;
+    double rhs = e * comp.x[r] / dt + (ks * us + f) / rho - e * g;
+    double conv_diag = 0.0;
+    const int lid = comp.link_id[static_cast<std::size_t>(r)];
+    const auto& slot = comp.slot[static_cast<std::size_t>(r)];
+    for (int dir = 0; dir < 6; ++dir) {
+      if (slot[static_cast<std::size_t>(dir) + 1] == -2) continue;
+      const double conv = convection ? momentum_cv_flux(c, idx, dir) * inv_2v : 0.0;
+      const NodeLink link = lid < 0 ? NodeLink{} : comp.links[static_cast<std::size_t>(lid)][static_cast<std::size_t>(dir)];
+      if (link.type == NodeLink::Type::neumann) continue;
+      const double d = e * nu_h2 * shortley_weller(comp, lid, dir);
+      diag += d;
+      conv_diag -= conv;
+      if (link.type == NodeLink::Type::active) {
+        val[slot[static_cast<std::size_t>(dir) + 1]] = -d + conv;
+      } else {
+        rhs += (d - conv) * link.value;
+      }
+    }
+    val[slot[0]] = diag + conv_diag;
+    comp.a[r] = diag;
+    comp.b[r] = rhs;
+  }
+}
+
+void FvmSolver::solve_momentum(int c) {
+  Component& comp = comp_[static_cast<std::size_t>(c)];
+  const long rows = static_cast<long>(comp.node.size());
+  if (rows == 0) return;
+  Eigen::VectorXd rhs(rows);
+  const long sc = p_.stride(c);
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
+  for (long r = 0; r < rows; ++r) {
+    const long idx = comp.node[static_cast<std::size_t>(r)];
+    const double grad_p = (p_[static_cast<std::size_t>(idx)] - p_[static_cast<std::size_t>(idx - sc)]) / h_;
+    rhs[r] = comp.b[r] - face_average(eps_, c, idx) * grad_p;
+  }
+  Eigen::BiCGSTAB<SpMat, Eigen::DiagonalPreconditioner<double>> solver;
+  solver.setTolerance(piso_.momentum_tolerance);
+  solver.setMaxIterations(piso_.momentum_max_iterations);
+  solver.compute(comp.m);
+  Eigen::VectorXd x = solver.solveWithGuess(rhs, comp.x);
+  if (solver.info() != Eigen::Success && !(solver.error() < 100.0 * piso_.momentum_tolerance)) {
+    throw hs::common::NumericalError(fmt::format(
+        "FVM: momentum predictor (component {}) did not converge: residual {:.3g} after {} iterations at t = {:.6g} s",
+        "xyz"[c], solver.error(), solver.iterations(), time_s_));
+  }
+  comp.x = x;
+  stats_.momentum_iterations += static_cast<int>(solver.iterations());
+}
+
+/// Flow-rate control: the velocity change that one implicit step gives per unit change of the mean
+/// gradient, u1 = -M^-1 eps (time, Ksl and viscous terms; an influence-matrix approach as in constant-flux
+/// channel DNS). Holding the flow rate with it needs no under-relaxation at any viscous number dt nu/dx^2,
+/// where a plug correction rAU dG (OpenFOAM meanVelocityForce) overshoots when nu dt/dx^2 >> 1.
+void FvmSolver::compute_drive_response() {
+  const int c = drive_.axis;
+  Component& comp = comp_[static_cast<std::size_t>(c)];
+  const long rows = static_cast<long>(comp.node.size());
+  const double g = drive_gradient_;
+  drive_gradient_ = 0.0;
+  const Eigen::VectorXd x = comp.x;
+  comp.x.setZero();
+  assemble_momentum(c, false);
+  Eigen::VectorXd rhs(rows);
+  for (long r = 0; r < rows; ++r) rhs[r] = comp.b[r] - face_average(eps_, c, comp.node[static_cast<std::size_t>(r)]);
+  Eigen::BiCGSTAB<SpMat, Eigen::DiagonalPreconditioner<double>> solver;
+  solver.setTolerance(1e-10);
+  solver.setMaxIterations(100 * piso_.momentum_max_iterations);
+  solver.compute(comp.m);
+  drive_response_ = solver.solve(rhs);
+  comp.x = x;
+  drive_gradient_ = g;
+  const auto& ap = grid_.apertures(c);
+  double flux = 0.0;
+  for (long r = 0; r < rows; ++r) {
+    const long idx = comp.node[static_cast<std::size_t>(r)];
+    flux += face_average(eps_, c, idx) * ap[static_cast<std::size_t>(idx)] * h_ * h_ * drive_response_[r];
+  }
+  drive_response_flux_ = flux / grid_.node_count(c, c);
+}
+
+}  // namespace hs::unresolved

@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: MIT
+// FvmSolver: set-up of the unknowns, the PISO time step, flow-rate control and checks.
+#include "unresolved/fvm/fvm_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+
+namespace hs::unresolved {
+
+using hs::common::Vec3;
+
+FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const PisoSettings& piso, const FlowDrive& drive,
+                     MPI_Comm comm)
+    : grid_(grid), fluid_(fluid), piso_(piso), drive_(drive), h_(grid.dx_m()), pressure_(comm) {
+  if (!(fluid.density_kg_m3 > 0.0) || !(fluid.kinematic_viscosity_m2_s > 0.0)) {
+    throw hs::common::ConfigError(fmt::format("FVM: density ({} kg/m^3) and kinematic viscosity ({} m^2/s) must be > 0",
+                                              fluid.density_kg_m3, fluid.kinematic_viscosity_m2_s));
+  }
+  if (!(piso.dt_s > 0.0) || piso.correctors < 1 || !(piso.max_courant > 0.0)) {
+    throw hs::common::ConfigError(fmt::format("FVM: dt_s = {} must be > 0, correctors = {} >= 1, max_courant = {} > 0",
+                                              piso.dt_s, piso.correctors, piso.max_courant));
+  }
+  if (drive.mode != FlowDrive::Mode::none && !grid.periodic(drive.axis)) {
+    throw hs::common::ConfigError(fmt::format("FVM: the flow drive needs a periodic axis; axis {} is not periodic",
+                                              "xyz"[drive.axis]));
+  }
+  if (drive.mode == FlowDrive::Mode::pressure_gradient) drive_gradient_ = drive.pressure_gradient_Pa_m / fluid.density_kg_m3;
+  const auto& n = grid.cells();
+  eps_ = BlockField<double>(n, 1.0);
+  ksl_ = BlockField<double>(n, 0.0);
+  deps_dt_ = BlockField<double>(n, 0.0);
+  us_ = BlockField<Vec3>(n, Vec3{});
+  force_ = BlockField<Vec3>(n, Vec3{});
+  p_ = BlockField<double>(n, 0.0);
+  for (int c = 0; c < 3; ++c) {
+    u_[static_cast<std::size_t>(c)] = grid.fixed_values(c);
+    hb_[static_cast<std::size_t>(c)] = grid.fixed_values(c);
+    phi_[static_cast<std::size_t>(c)] = BlockField<double>(n, 0.0);
+    build_component(c);
+  }
+  build_pressure_rows();
+  update_fluxes();
+}
+
+void FvmSolver::build_component(int c) {
+  Component& comp = comp_[static_cast<std::size_t>(c)];
+  const auto& kinds = grid_.kinds(c);
+  comp.row = BlockField<int>(grid_.cells(), -1);
+  for (int k = 0; k < grid_.node_count(c, 2); ++k) {
+    for (int j = 0; j < grid_.node_count(c, 1); ++j) {
+      for (int i = 0; i < grid_.node_count(c, 0); ++i) {
+        if (kinds(i, j, k) != static_cast<std::uint8_t>(NodeKind::active)) continue;
+        comp.row(i, j, k) = static_cast<int>(comp.node.size());
+        comp.node.push_back(static_cast<long>(comp.row.index(i, j, k)));
+      }
+    }
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (grid_.periodic(a)) comp.row.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
+  }
+  const int rows = static_cast<int>(comp.node.size());
+  comp.link_id.assign(static_cast<std::size_t>(rows), -1);
+  std::vector<Eigen::Triplet<double, int>> pattern;
+  pattern.reserve(static_cast<std::size_t>(rows) * 7);
+  const auto& n = grid_.cells();
+  for (int r = 0; r < rows; ++r) {
+    const long idx = comp.node[static_cast<std::size_t>(r)];
+    pattern.emplace_back(r, r, 1.0);
+    bool interior = true;
+    for (int dir = 0; dir < 6; ++dir) {
+      const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
+      const int col = comp.row[static_cast<std::size_t>(nb)];
+      if (col >= 0) {
+        pattern.emplace_back(r, col, 1.0);
+      } else {
+        interior = false;
+      }
+    }
+    if (interior) continue;
+    const long sx = n[0] + 3;
+    const long sy = n[1] + 3;
+    const std::array<int, 3> ijk{static_cast<int>(idx % sx) - 1, static_cast<int>((idx / sx) % sy) - 1,
+                                 static_cast<int>(idx / (sx * sy)) - 1};
+    std::array<NodeLink, 6> links{};
+    for (int dir = 0; dir < 6; ++dir) {
+      const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
+      if (comp.row[static_cast<std::size_t>(nb)] < 0) links[static_cast<std::size_t>(dir)] = grid_.link(c, ijk, dir);
+    }
+    comp.link_id[static_cast<std::size_t>(r)] = static_cast<int>(comp.links.size());
+    comp.links.push_back(links);
+  }
+  comp.m.resize(rows, rows);
+  comp.m.setFromTriplets(pattern.begin(), pattern.end(), [](double, double b) { return b; });
+  comp.m.makeCompressed();
+  comp.slot.assign(static_cast<std::size_t>(rows), std::array<int, 7>{-1, -1, -1, -1, -1, -1, -1});
+  for (int r = 0; r < rows; ++r) {
+    const long idx = comp.node[static_cast<std::size_t>(r)];
+    const int* outer = comp.m.outerIndexPtr();
+    const int* inner = comp.m.innerIndexPtr();
+    auto find = [&](int col) {
+      for (int q = outer[r]; q < outer[r + 1]; ++q) {
+        if (inner[q] == col) return q;
+      }
+      return -1;
+    };
+    comp.slot[static_cast<std::size_t>(r)][0] = find(r);
+    for (int dir = 0; dir < 6; ++dir) {
+      const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
+      const int col = comp.row[static_cast<std::size_t>(nb)];
+      // A one-cell periodic axis makes a node its own neighbour: that link contributes nothing (-2).
+      if (col >= 0) comp.slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(dir) + 1] = col == r ? -2 : find(col);
+    }
+  }
+  comp.x = Eigen::VectorXd::Zero(rows);
+  comp.b = Eigen::VectorXd::Zero(rows);
+  comp.a = Eigen::VectorXd::Ones(rows);
+  comp.hbya = Eigen::VectorXd::Zero(rows);
+}
+
+void FvmSolver::step() {
+  if (coefficients_dirty_) {
+    fill_cell_ghosts(eps_);
+    fill_cell_ghosts(ksl_);
+    for (int c = 0; c < 3; ++c) assemble_momentum(c);   // A (hence rAU) depends on eps and Ksl
+    build_pressure_matrix();
+    if (drive_.mode == FlowDrive::Mode::flow_rate) compute_drive_response();
+    coefficients_dirty_ = false;
+  }
+  fill_cell_ghosts(eps_);
+  fill_cell_ghosts(ksl_);
+  stats_ = StepStats{};
+  for (int c = 0; c < 3; ++c) {
+    assemble_momentum(c);
+    if (piso_.momentum_predictor) solve_momentum(c);
+  }
+  for (int corr = 0; corr < piso_.correctors; ++corr) pressure_corrector(corr + 1 == piso_.correctors);
+  update_fluxes();
+  if (drive_.mode == FlowDrive::Mode::flow_rate) correct_flow_rate();
+  time_s_ += piso_.dt_s;
+  ++steps_;
+  stats_.courant = courant_number();
+  check_state();
+}
+
+void FvmSolver::check_state() const {
+  for (int c = 0; c < 3; ++c) {
+    if (!comp_[static_cast<std::size_t>(c)].x.allFinite()) {
+      throw hs::common::NumericalError(fmt::format("FVM: non-finite velocity at t = {:.6g} s (step {})", time_s_, steps_));
+    }
+  }
+  if (stats_.courant > piso_.max_courant) {
+    throw hs::common::NumericalError(fmt::format(
+        "FVM: Courant number {:.3g} exceeds max_courant = {:.3g} at t = {:.6g} s (step {}); max |u| = {:.4g} m/s, "
+        "dx = {:.4g} m, dt = {:.4g} s: reduce dt_s below {:.4g} s",
+        stats_.courant, piso_.max_courant, time_s_, steps_, stats_.courant * h_ / piso_.dt_s, h_, piso_.dt_s,
+        piso_.dt_s * piso_.max_courant / stats_.courant));
+  }
+}
+
+double FvmSolver::courant_number() const {
+  double umax = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const auto& x = comp_[static_cast<std::size_t>(c)].x;
+    if (x.size() > 0) umax = std::max(umax, x.cwiseAbs().maxCoeff());
+  }
+  return umax * piso_.dt_s / h_;
+}
+
+void FvmSolver::scatter(int c, const Eigen::VectorXd& values, BlockField<double>& field) const {
+  const Component& comp = comp_[static_cast<std::size_t>(c)];
+  for (std::size_t r = 0; r < comp.node.size(); ++r) field[static_cast<std::size_t>(comp.node[r])] = values[static_cast<long>(r)];
+  fill_velocity_ghosts(c, field);
+}
+
+void FvmSolver::fill_velocity_ghosts(int c, BlockField<double>& field) const {
+  for (int a = 0; a < 3; ++a) {
+    if (grid_.periodic(a)) {
+      field.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
+      continue;
+    }
+    if (a == c) {
+      // Normal component: faces 0..n are real nodes, the ghosts are -1 and n + 1 (zero gradient).
+      const int n = grid_.cells()[static_cast<std::size_t>(a)];
+      const auto st = static_cast<std::size_t>(field.stride(a));
+      field.for_each_in_plane(a, -1, [&](std::size_t idx) { field[idx] = field[idx + st]; });
+      field.for_each_in_plane(a, n + 1, [&](std::size_t idx) { field[idx] = field[idx - st]; });
+      continue;
+    }
+    field.fill_zero_gradient(a);
+    // Tangential component beyond a wall: reflect about the wall value, so interpolation sees u_wall there.
+    const int n = grid_.cells()[static_cast<std::size_t>(a)];
+    for (int hi = 0; hi < 2; ++hi) {
+      const SideCondition& side = grid_.side(a, hi);
+      if (side.type != SideType::wall) continue;
+      const double wall = 2.0 * side.wall_velocity_m_s[c];
+      field.for_each_in_plane(a, hi == 1 ? n : -1, [&](std::size_t idx) { field[idx] = wall - field[idx]; });
+    }
+  }
+}
+
+void FvmSolver::fill_cell_ghosts(BlockField<double>& field) const {
+  for (int a = 0; a < 3; ++a) {
+    if (grid_.periodic(a)) {
+      field.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
+    } else {
+      field.fill_zero_gradient(a);
+    }
+  }
+}
+
+void FvmSolver::update_fluxes() {
+  const double area = h_ * h_;
+  for (int c = 0; c < 3; ++c) {
+    scatter(c, comp_[static_cast<std::size_t>(c)].x, u_[static_cast<std::size_t>(c)]);
+    auto& phi = phi_[static_cast<std::size_t>(c)];
+    const auto& u = u_[static_cast<std::size_t>(c)];
+    const auto& ap = grid_.apertures(c);
+    for (int k = 0; k < grid_.node_count(c, 2); ++k) {
+      for (int j = 0; j < grid_.node_count(c, 1); ++j) {
+        for (int i = 0; i < grid_.node_count(c, 0); ++i) {
+          const std::size_t idx = phi.index(i, j, k);
+          phi[idx] = ap[idx] == 0.0 ? 0.0 : face_average(eps_, c, static_cast<long>(idx)) * ap[idx] * area * u[idx];
+        }
+      }
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (grid_.periodic(a)) phi.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
+    }
+  }
+}
+
+double FvmSolver::flow_rate_m3_s(int axis) const {
+  const auto& phi = phi_[static_cast<std::size_t>(axis)];
+  double sum = 0.0;
+  for (int k = 0; k < grid_.node_count(axis, 2); ++k) {
+    for (int j = 0; j < grid_.node_count(axis, 1); ++j) {
+      for (int i = 0; i < grid_.node_count(axis, 0); ++i) sum += phi(i, j, k);
+    }
+  }
+  return sum / grid_.node_count(axis, axis);
+}
+
+void FvmSolver::correct_flow_rate() {
+  const double dg = (drive_.flow_rate_m3_s - flow_rate_m3_s(drive_.axis)) / drive_response_flux_;
+  comp_[static_cast<std::size_t>(drive_.axis)].x += dg * drive_response_;
+  drive_gradient_ += dg;
+  update_fluxes();
+}
+
+}  // namespace hs::unresolved

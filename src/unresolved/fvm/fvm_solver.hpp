@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+// Volume-averaged incompressible Navier-Stokes (CFDEM "model A") on an FvmGrid, advanced by PISO.
+#pragma once
+
+#include <mpi.h>
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Sparse>
+
+#include "common/vec3.hpp"
+#include "unresolved/fvm/block_field.hpp"
+#include "unresolved/fvm/fvm_grid.hpp"
+#include "unresolved/fvm/pressure_solver.hpp"
+
+namespace hs::unresolved {
+
+/// Loops over fewer unknowns than this run on one thread: an OpenMP fork costs more than the work.
+inline constexpr long kParallelRows = 20000;
+
+struct FluidProperties {
+  double density_kg_m3;
+  double kinematic_viscosity_m2_s;
+};
+
+struct PisoSettings {
+  double dt_s;                          // fixed CFD time step (CFDEM forbids a variable one)
+  int correctors = 2;                   // PISO pressure correctors (icoFoam default 2)
+  bool momentum_predictor = true;
+  double max_courant = 1.0;             // step() throws NumericalError above it
+  SolveTolerance pressure{};            // p: tolerance 1e-6, relTol 0.05 (final corrector: relTol 0)
+  double momentum_tolerance = 1e-6;     // BiCGSTAB relative residual of the momentum predictor
+  int momentum_max_iterations = 1000;
+};
+
+/// How a periodic axis is driven: a fixed mean pressure gradient, or a flow rate held by adjusting the
+/// gradient every step (as OpenFOAM's meanVelocityForce).
+struct FlowDrive {
+  enum class Mode { none, pressure_gradient, flow_rate } mode = Mode::none;
+  int axis = 2;
+  double pressure_gradient_Pa_m = 0.0;  // dp/dx along axis (negative drives flow towards +axis)
+  double flow_rate_m3_s = 0.0;
+};
+
+struct StepStats {
+  int pressure_iterations = 0;          // summed over the correctors of the last step
+  int momentum_iterations = 0;          // summed over the three components
+  double courant = 0.0;                 // max |u_c| dt / dx after the step
+};
+
+/// Model A (Zhou et al. 2010 set II, CFDEM cfdemSolverPiso), per unit mass, interstitial velocity u:
+///   eps (du/dt + u.grad u) - div(eps nu grad u) = -eps grad p - (Ksl/rho)(u - Us) + f/rho,
+///   d(eps)/dt + div(eps u) = 0,
+/// with eps the void fraction, Ksl the implicit exchange coefficient, Us the cell-averaged particle
+/// velocity and f the explicit force density, all cell-centred fields set by the coupling. Implicit Euler,
+/// central convection linearised with the old fluxes (icoFoam's numerics), PISO with the pressure
+/// Laplacian coefficient eps^2 / A (model A). The dev2 transpose stress term vanishes for uniform eps and
+/// is not included yet.
+class FvmSolver {
+ public:
+  FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const PisoSettings& piso, const FlowDrive& drive,
+            MPI_Comm comm = MPI_COMM_WORLD);
+
+  /// One PISO time step. Throws NumericalError when the Courant number exceeds max_courant or a value
+  /// is not finite.
+  void step();
+  [[nodiscard]] double time_s() const { return time_s_; }
+  [[nodiscard]] long steps() const { return steps_; }
+  [[nodiscard]] const StepStats& last_stats() const { return stats_; }
+  [[nodiscard]] const FvmGrid& grid() const { return grid_; }
+  [[nodiscard]] const PisoSettings& settings() const { return piso_; }
+  [[nodiscard]] const FluidProperties& fluid() const { return fluid_; }
+
+  // ---- Fields the coupling fills (cell-centred, index (i, j, k) of FvmGrid cells). Call
+  // coupling_fields_changed() after writing eps or Ksl, so the pressure matrix is rebuilt. ----
+  [[nodiscard]] BlockField<double>& void_fraction() { return eps_; }
+  [[nodiscard]] BlockField<double>& implicit_coefficient_kg_m3_s() { return ksl_; }
+  [[nodiscard]] BlockField<hs::common::Vec3>& particle_velocity_m_s() { return us_; }
+  [[nodiscard]] BlockField<hs::common::Vec3>& explicit_force_density_N_m3() { return force_; }
+  /// d(eps)/dt, 1/s, the volume source of the pressure equation (CFDEM step 7).
+  [[nodiscard]] BlockField<double>& void_fraction_rate_1_s() { return deps_dt_; }
+  void coupling_fields_changed() { coefficients_dirty_ = true; }
+  [[nodiscard]] const BlockField<double>& void_fraction() const { return eps_; }
+
+  // ---- Results in SI. ----
+  /// Fluid velocity at a point (trilinear on each staggered component; wall nodes hold the wall value).
+  [[nodiscard]] hs::common::Vec3 velocity_at(const hs::common::Vec3& x_m) const;
+  /// grad u at a point: g[a][b] = d u_a / d x_b, 1/s (central differences of velocity_at over one cell).
+  [[nodiscard]] std::array<hs::common::Vec3, 3> velocity_gradient_at(const hs::common::Vec3& x_m) const;
+  /// div(tau) = mu lap(u) at a point, N/m^3 (second differences of velocity_at over one cell): the
+  /// viscous force density the coupling turns into -V_p div(tau) on a particle (model A).
+  [[nodiscard]] hs::common::Vec3 viscous_force_density_at(const hs::common::Vec3& x_m) const;
+  /// grad p at a point, Pa/m, including the driving mean gradient.
+  [[nodiscard]] hs::common::Vec3 pressure_gradient_at(const hs::common::Vec3& x_m) const;
+  /// Cell-centred velocity (mean of the two faces of each component), m/s.
+  [[nodiscard]] hs::common::Vec3 cell_velocity(int i, int j, int k) const;
+  /// Cell pressure, Pa, including the driving mean gradient (zero at the box origin).
+  [[nodiscard]] double cell_pressure_Pa(int i, int j, int k) const;
+  /// Mean volume flux through the cross-sections normal to `axis`, m^3/s.
+  [[nodiscard]] double flow_rate_m3_s(int axis) const;
+  /// The current driving mean pressure gradient along the drive axis, Pa/m.
+  [[nodiscard]] double drive_pressure_gradient_Pa_m() const { return fluid_.density_kg_m3 * drive_gradient_; }
+  /// Staggered velocity of component c (face nodes), m/s.
+  [[nodiscard]] const BlockField<double>& face_velocity(int c) const { return u_[static_cast<std::size_t>(c)]; }
+  [[nodiscard]] double courant_number() const;
+
+ private:
+  using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  struct Component {
+    std::vector<long> node;                    // padded index of each unknown
+    BlockField<int> row;                       // unknown number of each node, -1 if not active
+    std::vector<int> link_id;                  // per unknown: index into links, -1 when all six are active
+    std::vector<std::array<NodeLink, 6>> links;
+    SpMat m;                                   // momentum matrix (pattern fixed at construction)
+    std::vector<std::array<int, 7>> slot;      // positions in m's value array: diagonal, then 6 directions
+    Eigen::VectorXd x, b, a, hbya;             // unknowns, source without grad p, diagonal A, H/A
+  };
+
+  void build_component(int c);
+  void build_pressure_rows();
+  void build_pressure_matrix();
+  void assemble_momentum(int c, bool convection = true);
+  void compute_drive_response();
+  void solve_momentum(int c);
+  void pressure_corrector(bool final);
+  void correct_flow_rate();
+  void update_fluxes();
+  void scatter(int c, const Eigen::VectorXd& values, BlockField<double>& field) const;
+  void fill_velocity_ghosts(int c, BlockField<double>& field) const;
+  void fill_cell_ghosts(BlockField<double>& field) const;
+  void fill_pressure_ghosts();
+  [[nodiscard]] double face_average(const BlockField<double>& cell_field, int c, long idx) const;
+  [[nodiscard]] double momentum_cv_flux(int c, long idx, int dir) const;
+  [[nodiscard]] double interpolate(int c, const BlockField<double>& field, const hs::common::Vec3& x_m) const;
+  void check_state() const;
+
+  const FvmGrid& grid_;
+  FluidProperties fluid_;
+  PisoSettings piso_;
+  FlowDrive drive_;
+  double h_;
+  double drive_gradient_ = 0.0;              // kinematic mean pressure gradient along drive_.axis, m/s^2
+  Eigen::VectorXd drive_response_;           // velocity change of one step per unit change of drive_gradient_
+  double drive_response_flux_ = 0.0;         // its flow rate, m^3/s per m/s^2
+  double time_s_ = 0.0;
+  long steps_ = 0;
+  bool coefficients_dirty_ = true;
+  StepStats stats_;
+
+  std::array<Component, 3> comp_;
+  std::array<BlockField<double>, 3> u_;      // face velocities, m/s
+  std::array<BlockField<double>, 3> hb_;     // H/A on faces (PISO work field)
+  std::array<BlockField<double>, 3> phi_;    // face volume fluxes eps * aperture * dx^2 * u, m^3/s
+  BlockField<double> p_;                     // kinematic pressure (periodic part), m^2/s^2
+  BlockField<int> p_row_;
+  std::vector<long> p_cell_;
+  int p_ref_row_ = -1;                       // pinned cell when no outlet fixes the pressure level
+  std::vector<double> p_rhs_, p_x_;
+  PressureSolver pressure_;
+
+  BlockField<double> eps_, ksl_, deps_dt_;
+  BlockField<hs::common::Vec3> us_, force_;
+};
+
+}  // namespace hs::unresolved
