@@ -17,6 +17,7 @@
 #include "common/io/vtk_polydata.hpp"
 #include "common/log.hpp"
 #include "common/progress.hpp"
+#include "common/run_context.hpp"
 #include "common/run_folder.hpp"
 #include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
@@ -121,8 +122,7 @@ void write_fields(const FvmSolver& solver, const hs::common::RunFolder& folder, 
   pvd.add(solver.time_s(), "vtk/" + name);
 }
 
-nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, const hs::common::TimeLoop& loop,
-                         std::chrono::steady_clock::time_point start) {
+nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, const hs::common::TimeLoop& loop) {
   const double gradient = solver.drive_pressure_gradient_Pa_m();
   const double q = solver.flow_rate_m3_s(2);
   const double q_exact = poiseuille_flow_rate(c, gradient);
@@ -130,7 +130,6 @@ nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, con
   const double r = 0.5 * c.diameter_m;
   const double mean_velocity = q / (std::numbers::pi * r * r);
   nlohmann::json summary;
-  summary["case"] = "tube-plasma";
   summary["flow_rate_m3_s"] = q;
   summary["poiseuille_flow_rate_m3_s"] = q_exact;
   summary["flow_rate_error_pct"] = error_pct;
@@ -143,23 +142,18 @@ nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, con
   summary["courant"] = solver.last_stats().courant;
   summary["max_error_pct"] = c.max_error_pct;
   summary["passed"] = std::abs(error_pct) <= c.max_error_pct;
-  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["timings"] = loop.timings();
-  summary["provenance"] = hs::common::provenance();
   return summary;
 }
 
 }  // namespace
 
 int run_tube_plasma(const hs::common::CaseRequest& request) {
-  const auto start = std::chrono::steady_clock::now();
   const TubePlasmaConfig c = parse(*request.config, request.quick);
-  const auto folder = request.output_dir ? hs::common::RunFolder::create_exact(*request.output_dir)
-                                         : hs::common::RunFolder::create_new(request.case_dir / "runs");
-  hs::common::Log log;
+  hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-plasma");
+  const hs::common::RunFolder& folder = ctx.folder();
+  hs::common::Log& log = ctx.log();
   log.set_quiet(request.quiet);
-  log.open_file(folder.file("log.txt"));
-  request.config->write_resolved(folder.file("case.resolved.toml"));
   const double dx = c.diameter_m / c.cells_across;
   const hs::common::UnitConverter units({.dx_m = dx, .dt_s = c.piso.dt_s, .rho_kg_m3 = c.fluid.density_kg_m3});
   units.write(folder.file("units.txt"));
@@ -185,12 +179,12 @@ int run_tube_plasma(const hs::common::CaseRequest& request) {
                 static_cast<double>(st.pressure_iterations), static_cast<double>(st.momentum_iterations)});
   });
   loop.every(std::max(1L, units.to_lattice_steps(c.fields_every_s)), "write_fields", [&] { write_fields(solver, folder, pvd, loop.step()); });
-  hs::common::Progress progress("tube-plasma", loop.end_step(), !request.quiet);
+  hs::common::Progress progress("tube-plasma", loop.end_step(), ctx.show_progress());
   loop.run([&](long s) { progress.update(s); });
   progress.finish();
 
-  const nlohmann::json summary = summarise(c, solver, loop, start);
-  hs::common::write_json(folder.file("summary.json"), summary);
+  const nlohmann::json summary = summarise(c, solver, loop);
+  ctx.write_summary(summary);
   const double q = summary["flow_rate_m3_s"].get<double>();
   const double q_exact = summary["poiseuille_flow_rate_m3_s"].get<double>();
   const double error_pct = summary["flow_rate_error_pct"].get<double>();
