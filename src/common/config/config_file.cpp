@@ -203,6 +203,30 @@ std::vector<double> ConfigSection::numbers_in(std::string_view key, double lo, d
   return out;
 }
 
+std::vector<std::string> ConfigSection::strings(std::string_view key, std::size_t min_count) {
+  const toml::node* node = lookup(key);
+  const std::string what = fmt::format("must be a list of at least {} strings", min_count);
+  if (node == nullptr) fail(key, "missing; " + what);
+  const auto* arr = node->as_array();
+  if (arr == nullptr || arr->size() < min_count) fail(key, what);
+  std::vector<std::string> out;
+  for (const auto& el : *arr) {
+    const auto* s = el.as_string();
+    if (s == nullptr) fail(key, what);
+    out.push_back(s->get());
+  }
+  record_copy(key, *node);
+  return out;
+}
+
+std::vector<std::string> ConfigSection::keys() const {
+  std::vector<std::string> out;
+  if (table_ != nullptr) {
+    for (const auto& [k, v] : *table_) out.emplace_back(k.str());
+  }
+  return out;
+}
+
 std::filesystem::path ConfigSection::file_path(std::string_view key) {
   const std::filesystem::path p = string(key);
   return p.is_absolute() ? p : file_.file().parent_path() / p;

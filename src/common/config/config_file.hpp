@@ -45,6 +45,10 @@ class ConfigSection {
                                       std::string_view default_value);
   /// A list of numbers, each within [lo, hi], at least `min_count` long.
   [[nodiscard]] std::vector<double> numbers_in(std::string_view key, double lo, double hi, std::size_t min_count = 1);
+  /// A list of strings, at least `min_count` long.
+  [[nodiscard]] std::vector<std::string> strings(std::string_view key, std::size_t min_count = 1);
+  /// The keys present in this section, sorted (for sections whose keys are names, e.g. [validity]).
+  [[nodiscard]] std::vector<std::string> keys() const;
   /// A path relative to the case file's folder, returned absolute.
   [[nodiscard]] std::filesystem::path file_path(std::string_view key);
 

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// Rule-based bottom-up simplification of prefix expressions.
+#include "regression/simplify.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace hs::regression {
+namespace {
+
+bool is_const(const Expression& e) { return e.size() == 1 && e[0].op == Op::Const; }
+bool is_value(const Expression& e, double v) { return is_const(e) && e[0].value == v; }
+
+Expression leaf(double v) { return Expression({Node::constant(v)}); }
+
+Expression make(Op op, const Expression& a, const Expression& b = {}) {
+  std::vector<Node> n{Node::function(op)};
+  n.insert(n.end(), a.nodes().begin(), a.nodes().end());
+  n.insert(n.end(), b.nodes().begin(), b.nodes().end());
+  return Expression(std::move(n));
+}
+
+// Children of a function node at the root of `e`.
+Expression first_child(const Expression& e) { return e.subtree(1); }
+Expression second_child(const Expression& e) { return e.subtree(e.subtree_end(1)); }
+
+Expression rewrite_add(const Expression& a, const Expression& b) {
+  if (is_value(a, 0.0)) return b;
+  if (is_value(b, 0.0)) return a;
+  if (is_const(b)) return make(Op::Add, b, a);
+  if (b[0].op == Op::Neg) return make(Op::Sub, a, first_child(b));
+  if (is_const(a) && b[0].op == Op::Add && is_const(first_child(b))) {
+    return make(Op::Add, leaf(a[0].value + first_child(b)[0].value), second_child(b));
+  }
+  return make(Op::Add, a, b);
+}
+
+Expression rewrite_sub(const Expression& a, const Expression& b) {
+  if (is_value(b, 0.0)) return a;
+  if (is_value(a, 0.0)) return make(Op::Neg, b);
+  if (a == b) return leaf(0.0);
+  if (is_const(b)) return make(Op::Add, leaf(-b[0].value), a);
+  if (b[0].op == Op::Neg) return make(Op::Add, a, first_child(b));
+  return make(Op::Sub, a, b);
+}
+
+Expression rewrite_mul(const Expression& a, const Expression& b, bool algebraic) {
+  if (is_value(a, 0.0) || is_value(b, 0.0)) return leaf(0.0);
+  if (is_value(a, 1.0)) return b;
+  if (is_value(b, 1.0)) return a;
+  if (is_const(b)) return make(Op::Mul, b, a);
+  if (is_value(a, -1.0)) return make(Op::Neg, b);
+  if (is_const(a) && b[0].op == Op::Mul && is_const(first_child(b))) {
+    return make(Op::Mul, leaf(a[0].value * first_child(b)[0].value), second_child(b));
+  }
+  if (algebraic && is_const(a) && b[0].op == Op::Div) {
+    return make(Op::Div, make(Op::Mul, a, first_child(b)), second_child(b));
+  }
+  return make(Op::Mul, a, b);
+}
+
+Expression rewrite_div(const Expression& a, const Expression& b) {
+  if (is_value(b, 1.0)) return a;
+  if (a == b) return leaf(1.0);   // protected: x / x is 1 also where |x| <= 0.001
+  if (is_const(b) && std::abs(b[0].value) > protect_threshold) return make(Op::Mul, leaf(1.0 / b[0].value), a);
+  return make(Op::Div, a, b);
+}
+
+Expression rewrite(Op op, const Expression& a, const Expression& b, bool algebraic) {
+  if (is_const(a) && (arity(op) == 1 || is_const(b))) {
+    return leaf(apply(op, a[0].value, arity(op) == 2 ? b[0].value : 0.0));
+  }
+  switch (op) {
+    case Op::Add: return rewrite_add(a, b);
+    case Op::Sub: return rewrite_sub(a, b);
+    case Op::Mul: return rewrite_mul(a, b, algebraic);
+    case Op::Div: return rewrite_div(a, b);
+    case Op::Neg:
+      if (a[0].op == Op::Neg) return first_child(a);
+      return make(op, a);
+    case Op::Pow:
+      if (is_value(b, 1.0)) return make(Op::Abs, a);   // protected pow uses |a|
+      if (is_value(b, 0.0)) return leaf(1.0);
+      return make(op, a, b);
+    default: return arity(op) == 2 ? make(op, a, b) : make(op, a);
+  }
+}
+
+Expression simplify_once(const Expression& e, std::size_t i, bool algebraic) {
+  const Node& n = e[i];
+  if (n.is_terminal()) return Expression({n});
+  const Expression a = simplify_once(e, i + 1, algebraic);
+  const Expression b = arity(n.op) == 2 ? simplify_once(e, e.subtree_end(i + 1), algebraic) : Expression{};
+  return rewrite(n.op, a, b, algebraic);
+}
+
+}  // namespace
+
+Expression simplify(const Expression& e, SimplifyMode mode) {
+  const bool algebraic = mode == SimplifyMode::Algebraic;
+  if (e.empty()) return e;
+  Expression current = e;
+  for (int pass = 0; pass < 16; ++pass) {
+    Expression next = simplify_once(current, 0, algebraic);
+    if (next == current) break;
+    current = std::move(next);
+  }
+  return current;
+}
+
+Expression snap_constants(const Expression& e, double tolerance) {
+  constexpr std::array<double, 8> denominators{1.0, 2.0, 4.0, 8.0, 10.0, 16.0, 100.0, 1000.0};
+  Expression out = e;
+  for (Node& n : out.nodes()) {
+    if (n.op != Op::Const) continue;
+    for (double d : denominators) {
+      const double snapped = std::round(n.value * d) / d;
+      if (std::abs(snapped - n.value) <= tolerance * std::max(std::abs(n.value), 1e-300)) {
+        n.value = snapped;
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace hs::regression
