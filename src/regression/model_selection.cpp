@@ -56,6 +56,33 @@ std::vector<double> out_of_fold(const Expression& e, const std::vector<std::vect
   return oof;
 }
 
+// Constants set to zero one at a time (then simplified and refitted) while the training loss stays within
+// round-off of where it was: removes terms such as 1e-16*T that LM leaves behind on exact data.
+Expression prune_constants(Expression e, const DataView& x, std::span<const double> y, Metric metric, int iterations) {
+  double mean = 0.0;
+  for (double v : y) mean += v / static_cast<double>(y.size());
+  const double null_loss = loss(metric, y, std::vector<double>(y.size(), mean));
+  double base = loss(metric, y, predict(e, x));
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t k : e.constant_positions()) {
+      Expression candidate = e;
+      candidate.nodes()[k].value = 0.0;
+      candidate = simplify(candidate, SimplifyMode::Algebraic);
+      if (candidate.size() >= e.size()) continue;
+      candidate = refit_constants(candidate, x, y, iterations);
+      const double l = loss(metric, y, predict(candidate, x));
+      if (l <= base * (1.0 + 1e-6) + 1e-12 * null_loss) {
+        e = std::move(candidate);
+        base = std::min(base, l);
+        changed = true;
+        break;
+      }
+    }
+  }
+  return e;
+}
+
 }  // namespace
 
 Scores score(std::span<const double> y, std::span<const double> p) {
@@ -111,10 +138,11 @@ ValidatedModel fit_validated(const SearchSettings& search, const ValidationSetti
       break;
     }
   }
-  out.expression = chosen ? chosen->expression : out.search.best;
+  out.expression = chosen && validation.select_from_front ? chosen->expression : out.search.best;
   if (search.lm_iterations > 0) {
-    out.expression = simplify(snap_constants(refit_constants(out.expression, train_x.view(), y_train,
-                                                             validation.refit_iterations)));
+    const Expression refit = refit_constants(out.expression, train_x.view(), y_train, validation.refit_iterations);
+    const Expression pruned = prune_constants(refit, train_x.view(), y_train, search.metric, validation.refit_iterations);
+    out.expression = simplify(snap_constants(pruned), SimplifyMode::Algebraic);
   }
   const auto p_train = predict(out.expression, train_x.view());
   out.train = score(y_train, p_train);

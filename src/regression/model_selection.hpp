@@ -35,6 +35,7 @@ struct ValidationSettings {
   double test_fraction = 0.2;     // held out, never seen by the search
   int folds = 5;                  // k-fold CV of every front member (<= 1: no CV, train loss decides)
   int refit_iterations = 20;      // LM steps when refitting a front member's constants on a fold
+  bool select_from_front = true;  // false: gplearn's choice, the program of lowest raw training loss
 };
 
 /// Splits, searches on the training rows, cross-validates the front, picks the simplest front member with

@@ -44,7 +44,7 @@ Expression rewrite_sub(const Expression& a, const Expression& b) {
   return make(Op::Sub, a, b);
 }
 
-Expression rewrite_mul(const Expression& a, const Expression& b, bool algebraic) {
+Expression rewrite_mul(const Expression& a, const Expression& b) {
   if (is_value(a, 0.0) || is_value(b, 0.0)) return leaf(0.0);
   if (is_value(a, 1.0)) return b;
   if (is_value(b, 1.0)) return a;
@@ -53,14 +53,25 @@ Expression rewrite_mul(const Expression& a, const Expression& b, bool algebraic)
   if (is_const(a) && b[0].op == Op::Mul && is_const(first_child(b))) {
     return make(Op::Mul, leaf(a[0].value * first_child(b)[0].value), second_child(b));
   }
-  if (algebraic && is_const(a) && b[0].op == Op::Div) {
-    return make(Op::Div, make(Op::Mul, a, first_child(b)), second_child(b));
-  }
   return make(Op::Mul, a, b);
 }
 
-Expression rewrite_div(const Expression& a, const Expression& b) {
+// True-division rules (Algebraic mode): constants move out of quotients to the front of the product.
+Expression rewrite_div_algebraic(const Expression& a, const Expression& b) {
+  const bool a_scaled = a[0].op == Op::Mul && is_const(first_child(a));
+  const bool b_scaled = b[0].op == Op::Mul && is_const(first_child(b));
+  const Expression num = a_scaled ? second_child(a) : a;
+  const Expression den = b_scaled ? second_child(b) : b;
+  const double c = (a_scaled ? first_child(a)[0].value : 1.0) / (b_scaled ? first_child(b)[0].value : 1.0);
+  return make(Op::Mul, leaf(c), make(Op::Div, num, den));
+}
+
+Expression rewrite_div(const Expression& a, const Expression& b, bool algebraic) {
   if (is_value(b, 1.0)) return a;
+  if (algebraic && !is_const(b) && ((a[0].op == Op::Mul && is_const(first_child(a))) ||
+                                    (b[0].op == Op::Mul && is_const(first_child(b))))) {
+    return rewrite_div_algebraic(a, b);
+  }
   if (a == b) return leaf(1.0);   // protected: x / x is 1 also where |x| <= 0.001
   if (is_const(b) && std::abs(b[0].value) > protect_threshold) return make(Op::Mul, leaf(1.0 / b[0].value), a);
   return make(Op::Div, a, b);
@@ -73,8 +84,13 @@ Expression rewrite(Op op, const Expression& a, const Expression& b, bool algebra
   switch (op) {
     case Op::Add: return rewrite_add(a, b);
     case Op::Sub: return rewrite_sub(a, b);
-    case Op::Mul: return rewrite_mul(a, b, algebraic);
-    case Op::Div: return rewrite_div(a, b);
+    case Op::Mul: return rewrite_mul(a, b);
+    case Op::Div: return rewrite_div(a, b, algebraic);
+    case Op::Sqrt:   // Algebraic: sqrt(c * x) = sqrt(c) * sqrt(x) for c > 0 (protected sqrt uses |.| anyway)
+      if (algebraic && a[0].op == Op::Mul && is_const(first_child(a))) {
+        return make(Op::Mul, leaf(std::sqrt(std::abs(first_child(a)[0].value))), make(Op::Sqrt, second_child(a)));
+      }
+      return make(op, a);
     case Op::Neg:
       if (a[0].op == Op::Neg) return first_child(a);
       return make(op, a);

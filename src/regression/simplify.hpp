@@ -8,14 +8,14 @@ namespace hs::regression {
 
 enum class SimplifyMode {
   Exact,       // only identities of the protected functions, for every finite input
-  Algebraic,   // also rules of true division, c * (a / b) -> (c * a) / b: exact wherever no denominator is
-               // within 0.001 of zero (callers re-score the result on their data)
+  Algebraic,   // also rules of true division, (c1 * a) / (c2 * b) -> (c1/c2) * (a / b), and
+               // sqrt(c * a) -> sqrt(|c|) * sqrt(a): exact wherever no denominator is within 0.001 of zero
+               // (callers re-score the result on their data)
 };
 
 /// Bottom-up rewriting until nothing changes: folds constant subtrees (with protected semantics), removes
 /// neutral elements (x + 0, x * 1, x / 1, x^0), collapses x - x, x / x, -(-x), moves constants to the left
-/// of + and *, merges chains of constants (c1 * (c2 * x) -> c * x; in Algebraic mode also
-/// c * (a / b) -> (c * a) / b), turns x / c into (1/c) * x and
+/// of + and *, merges chains of constants (c1 * (c2 * x) -> c * x), turns x / c into (1/c) * x and
 /// x - c into -c + x.
 [[nodiscard]] Expression simplify(const Expression& e, SimplifyMode mode = SimplifyMode::Exact);
 
