@@ -14,5 +14,6 @@ using Action = std::function<int()>;
 void add_run_command(CLI::App& cli, Action& action);
 void add_bench_command(CLI::App& cli, Action& action);
 void add_validate_command(CLI::App& cli, Action& action);
+void add_fit_command(CLI::App& cli, Action& action);
 
 }  // namespace hs::app

@@ -11,6 +11,13 @@
 
 namespace hs::regression {
 
+/// gplearn's default function_set.
+[[nodiscard]] inline std::vector<Op> gplearn_function_set() {
+  std::vector<Op> f;
+  for (Op op : {Op::Add, Op::Sub, Op::Mul, Op::Div}) f.push_back(op);
+  return f;
+}
+
 struct SearchSettings {
   // --- gplearn's parameters and defaults ---
   int population_size = 1000;
@@ -22,7 +29,7 @@ struct SearchSettings {
   double const_hi = 1.0;
   int init_depth_lo = 2;                     // init_depth (2, 6)
   int init_depth_hi = 6;
-  std::vector<Op> functions{Op::Add, Op::Sub, Op::Mul, Op::Div};
+  std::vector<Op> functions = gplearn_function_set();   // ('add', 'sub', 'mul', 'div')
   Metric metric = Metric::Mae;               // 'mean absolute error'
   double parsimony_coefficient = 0.001;
   double p_crossover = 0.9;
@@ -38,6 +45,8 @@ struct SearchSettings {
   bool linear_scaling = false;               // fit y ~ a + b f(x) in closed form (Keijzer 2003)
   int lm_iterations = 0;                     // Levenberg-Marquardt steps on the constants per offspring (Operon)
   int lm_max_rows = 256;                     // LM works on at most this many rows (evenly strided)
+  int restarts = 1;                          // independent runs sharing the generations and the Pareto archive
+  bool penalise_duplicates = false;          // clones (same loss and length) lose every tournament but one
   double max_seconds = 0.0;                  // wall-clock budget (0 = none); breaks reproducibility if hit
   double selection_tolerance = 1.5;          // Pareto model choice: simplest with loss <= tol * best (PySR uses 1.5)
 };
@@ -45,15 +54,22 @@ struct SearchSettings {
 /// gplearn's defaults (the "gplearn" configuration of the benchmark).
 [[nodiscard]] inline SearchSettings gplearn_defaults() { return SearchSettings{}; }
 
-/// The full engine: gplearn's operators plus linear scaling, LM constant fitting, a length limit and an
-/// R^2 (= normalised MSE) loss; parsimony is lower because the Pareto front, not the penalty, picks the size.
+/// The full engine: gplearn's operators (with more mutation) plus linear scaling, LM constant fitting, a
+/// length limit, duplicate penalty and an R^2 (= normalised MSE) loss; parsimony is lower because the Pareto
+/// front, not the penalty, picks the size.
 [[nodiscard]] inline SearchSettings full_engine_defaults() {
   SearchSettings s;
   s.metric = Metric::R2;
   s.parsimony_coefficient = 1e-5;
   s.max_length = 40;
   s.linear_scaling = true;
-  s.lm_iterations = 10;
+  s.lm_iterations = 5;
+  s.lm_max_rows = 64;
+  s.penalise_duplicates = true;
+  s.p_crossover = 0.7;         // more mutation than gplearn keeps the population diverse
+  s.p_subtree_mutation = 0.1;
+  s.p_hoist_mutation = 0.05;
+  s.p_point_mutation = 0.1;
   return s;
 }
 

@@ -2,6 +2,7 @@
 // The generational GP loop: tournament selection, gplearn's operator probabilities, parsimony pressure.
 #include "regression/symbolic_regressor.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -63,6 +64,24 @@ double auto_parsimony(const Pop& pop) {
     var += dl * dl;
   }
   return var > 0.0 ? cov / var : 0.0;
+}
+
+// All but one of each group of clones (same length, loss equal to 1e-12 relative) get +inf.
+template <class Pop>
+void penalise_clones(const Pop& pop, std::vector<double>& penalised) {
+  std::vector<std::size_t> order(pop.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto la = pop[a].model.tree.size(), lb = pop[b].model.tree.size();
+    return la != lb ? la < lb : (pop[a].loss != pop[b].loss ? pop[a].loss < pop[b].loss : a < b);
+  });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const auto& a = pop[order[k - 1]];
+    const auto& b = pop[order[k]];
+    if (a.model.tree.size() == b.model.tree.size() && std::abs(a.loss - b.loss) <= 1e-12 * std::abs(a.loss)) {
+      penalised[order[k]] = std::numeric_limits<double>::infinity();
+    }
+  }
 }
 
 }  // namespace
@@ -186,23 +205,27 @@ SearchResult SymbolicRegressor::fit(const DataView& x, std::span<const double> y
   ParetoFront archive;
   SearchResult result;
   const auto start = std::chrono::steady_clock::now();
+  // With restarts, a fresh random population starts every `epoch` generations; the archive carries over.
+  const int epoch = std::max(1, settings_.generations / std::max(1, settings_.restarts));
   for (int gen = 0; gen < settings_.generations; ++gen) {
+    const bool fresh = gen % epoch == 0 && gen / epoch < std::max(1, settings_.restarts);
     std::vector<double> penalised(n);
-    const double c = settings_.parsimony_coefficient < 0.0 ? auto_parsimony(pop) : settings_.parsimony_coefficient;
-    for (std::size_t i = 0; i < n && gen > 0; ++i) {
+    const double c = settings_.parsimony_coefficient < 0.0 && !fresh ? auto_parsimony(pop) : settings_.parsimony_coefficient;
+    for (std::size_t i = 0; i < n && !fresh; ++i) {
       penalised[i] = pop[i].loss + c * static_cast<double>(pop[i].model.tree.size());
       if (!std::isfinite(penalised[i])) penalised[i] = std::numeric_limits<double>::infinity();
     }
+    if (!fresh && settings_.penalise_duplicates) penalise_clones(pop, penalised);
 #pragma omp parallel for schedule(dynamic, 8) num_threads(std::max(1, settings_.threads))
     for (std::size_t i = 0; i < n; ++i) {
       Rng rng = rng_for(settings_.seed, gen, i);
-      if (gen == 0) {
+      if (fresh) {
         next[i] = Individual{};
         next[i].model.tree = ops.random_program(rng);
       } else {
         next[i] = offspring(pop, penalised, ops, rng);
       }
-      if (gen == 0 || std::isnan(next[i].loss)) evaluate(next[i], x, y, x_lm, y_lm);
+      if (fresh || std::isnan(next[i].loss)) evaluate(next[i], x, y, x_lm, y_lm);
     }
     pop.swap(next);
     for (const auto& ind : pop) result.evaluations += ind.evaluations;
