@@ -27,6 +27,8 @@ int run_fit_command(const FitArgs& args) {
   const fs::path fit_dir = fs::absolute(args.fit_file).parent_path();
   const auto folder = args.output.empty() ? hs::common::RunFolder::create_new(fit_dir / "runs", "fit")
                                           : hs::common::RunFolder::create_exact(args.output);
+  fs::remove(folder.vtk_dir());          // a fit writes no fields and no checkpoints
+  fs::remove(folder.checkpoint_dir());
   fs::copy_file(args.fit_file, folder.file("fit.toml"));
   hs::closures::run_fit(request, folder.path(), args.quiet);
   const bool plotted = request.plot && !args.no_plot && hs::closures::render_fit_report(folder.path());

@@ -127,10 +127,14 @@ Verdict judge(const Equation& eq, const hsr::Expression& model, double seconds) 
   return v;
 }
 
+// The same budget for both configurations: population x generations (quick: a smoke test).
 hsr::SearchSettings budget(hsr::SearchSettings s, bool quick, std::uint64_t seed) {
   s.population_size = quick ? 300 : 1000;
-  s.generations = quick ? 10 : 40;
-  s.functions = {hsr::Op::Add, hsr::Op::Sub, hsr::Op::Mul, hsr::Op::Div, hsr::Op::Sqrt, hsr::Op::Exp, hsr::Op::Cos};
+  s.generations = quick ? 16 : 200;
+  s.functions.clear();   // element by element: GCC 12 warns falsely on assigning an initializer list here
+  for (auto op : {hsr::Op::Add, hsr::Op::Sub, hsr::Op::Mul, hsr::Op::Div, hsr::Op::Sqrt, hsr::Op::Exp, hsr::Op::Cos}) {
+    s.functions.push_back(op);
+  }
   s.seed = seed;
   s.threads = 0;   // filled by the caller
   return s;
@@ -140,7 +144,12 @@ Verdict run_one(const Equation& eq, bool full, bool quick, int threads) {
   const Sample data = sample(eq, 400, 17);
   hsr::SearchSettings s = budget(full ? hsr::full_engine_defaults() : hsr::gplearn_defaults(), quick, 1234);
   s.threads = threads;
-  if (full) s.stopping_criteria = 1e-13;   // NMSE at round-off level: the exact model is found
+  if (full) {
+    s.stopping_criteria = 1e-13;   // NMSE at round-off level: the exact model is found
+    s.restarts = 8;                // 8 independent runs of 25 generations share the budget and the archive
+  } else {
+    s.max_seconds = 45.0;          // gplearn has no length limit: bloat could make 200 generations take hours
+  }
   hsr::ValidationSettings v;
   v.test_fraction = 0.25;
   v.folds = full ? 5 : 0;

@@ -87,7 +87,7 @@ ClosureFile make_closure(const FitRequest& r, const Table& t, const hsr::Validat
   for (const auto& p : m.front) {
     c.pareto.push_back({p.complexity, p.loss, p.cv_loss, hsr::to_infix(p.expression, r.features)});
   }
-  c.dataset = r.dataset.string();
+  c.dataset = r.dataset.lexically_normal().string();   // run_fit makes it relative to the closure file
   c.dataset_sha256 = sha256_file(r.dataset);
   c.seed = static_cast<std::int64_t>(r.search.seed);
   c.threads = r.search.threads;
@@ -129,8 +129,11 @@ ClosureFile run_fit(const FitRequest& request, const std::filesystem::path& out_
   const auto t0 = std::chrono::steady_clock::now();
   const auto model = hsr::fit_validated(request.search, request.validation, table.x, table.y);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const ClosureFile closure = make_closure(request, table, model);
+  ClosureFile closure = make_closure(request, table, model);
   std::filesystem::create_directories(out_dir);
+  closure.dataset = std::filesystem::relative(std::filesystem::absolute(request.dataset), std::filesystem::absolute(out_dir))
+                        .lexically_normal()
+                        .string();
   closure.write(out_dir / (request.name + ".toml"));
   write_tables(out_dir, request, table, model, closure);
   nlohmann::json summary{{"name", closure.name},        {"kind", closure.kind},

@@ -63,6 +63,10 @@ hsr::SearchSettings read_search(ConfigSection s) {
   r.linear_scaling = s.boolean_or("linear_scaling", r.linear_scaling);
   r.lm_iterations = static_cast<int>(s.integer_in_or("lm_iterations", 0, 1000, r.lm_iterations));
   r.max_seconds = s.non_negative_or("max_seconds", r.max_seconds);
+  r.restarts = static_cast<int>(s.integer_in_or("restarts", 1, 1000, r.restarts));
+  r.lexicase = s.boolean_or("lexicase", r.lexicase);
+  r.penalise_duplicates = s.boolean_or("penalise_duplicates", r.penalise_duplicates);
+  r.lm_max_rows = static_cast<int>(s.integer_in_or("lm_max_rows", 1, 1 << 30, r.lm_max_rows));
   r.selection_tolerance = s.number_in_or("selection_tolerance", 1.0, 1e6, r.selection_tolerance);
   r.seed = static_cast<std::uint64_t>(s.integer_in_or("seed", 0, std::numeric_limits<long>::max(), 0));
   r.threads = static_cast<int>(s.integer_in_or("threads", 1, 1024, 1));

@@ -19,8 +19,8 @@ namespace hs::closures {
 ///   [search]  engine = "full" | "gplearn" (which defaults), then any of: functions, population_size,
 ///             generations, tournament_size, const_range, init_depth, metric, parsimony_coefficient
 ///             (or "auto"), p_crossover, p_subtree_mutation, p_hoist_mutation, p_point_mutation,
-///             p_point_replace, stopping_criteria, max_length, linear_scaling, lm_iterations, max_seconds,
-///             selection_tolerance, seed, threads
+///             p_point_replace, stopping_criteria, max_length, linear_scaling, lm_iterations, lm_max_rows,
+///             max_seconds, selection_tolerance, restarts, lexicase, penalise_duplicates, seed, threads
 ///   [output]  plot = true
 struct FitRequest {
   std::filesystem::path fit_file;

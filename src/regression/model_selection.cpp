@@ -56,8 +56,8 @@ std::vector<double> out_of_fold(const Expression& e, const std::vector<std::vect
   return oof;
 }
 
-// Constants set to zero one at a time (then simplified and refitted) while the training loss stays within
-// round-off of where it was: removes terms such as 1e-16*T that LM leaves behind on exact data.
+// Constants set to zero and abs() removed one at a time (then simplified and refitted) while the training loss
+// stays within round-off of where it was: removes terms such as 1e-16*T that LM leaves behind on exact data.
 Expression prune_constants(Expression e, const DataView& x, std::span<const double> y, Metric metric, int iterations) {
   double mean = 0.0;
   for (double v : y) mean += v / static_cast<double>(y.size());
@@ -65,11 +65,17 @@ Expression prune_constants(Expression e, const DataView& x, std::span<const doub
   double base = loss(metric, y, predict(e, x));
   for (bool changed = true; changed;) {
     changed = false;
-    for (std::size_t k : e.constant_positions()) {
+    for (std::size_t k = 0; k < e.size(); ++k) {
+      if (e[k].op != Op::Const && e[k].op != Op::Abs) continue;
+      // A constant set to 0, or an abs() removed (its argument keeps one sign on the data).
       Expression candidate = e;
-      candidate.nodes()[k].value = 0.0;
+      if (e[k].op == Op::Const) {
+        candidate.nodes()[k].value = 0.0;
+      } else {
+        candidate.nodes().erase(candidate.nodes().begin() + static_cast<std::ptrdiff_t>(k));
+      }
       candidate = simplify(candidate, SimplifyMode::Algebraic);
-      if (candidate.size() >= e.size()) continue;
+      if (candidate.size() >= e.size() || !candidate.well_formed()) continue;
       candidate = refit_constants(candidate, x, y, iterations);
       const double l = loss(metric, y, predict(candidate, x));
       if (l <= base * (1.0 + 1e-6) + 1e-12 * null_loss) {

@@ -12,7 +12,7 @@
 namespace hs::regression {
 
 /// Every node kind an expression may hold. Const and Var are terminals; the rest are functions.
-enum class Op : std::uint8_t {
+enum class Op : int {   // int, not uint8_t: GCC 12 gives false -Wstringop-overflow on byte-enum vectors
   Const, Var,
   Add, Sub, Mul, Div, Pow, Min, Max,                        // binary
   Sqrt, Log, Exp, Neg, Inv, Abs, Sin, Cos, Tanh,            // unary

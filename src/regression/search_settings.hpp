@@ -45,6 +45,8 @@ struct SearchSettings {
   bool linear_scaling = false;               // fit y ~ a + b f(x) in closed form (Keijzer 2003)
   int lm_iterations = 0;                     // Levenberg-Marquardt steps on the constants per offspring (Operon)
   int lm_max_rows = 256;                     // LM works on at most this many rows (evenly strided)
+  bool lexicase = false;                     // epsilon-lexicase instead of tournament selection
+  int lexicase_cases = 128;                  // at most this many training rows (evenly strided) as cases
   int restarts = 1;                          // independent runs sharing the generations and the Pareto archive
   bool penalise_duplicates = false;          // clones (same loss and length) lose every tournament but one
   double max_seconds = 0.0;                  // wall-clock budget (0 = none); breaks reproducibility if hit

@@ -29,22 +29,42 @@ Expression rewrite_add(const Expression& a, const Expression& b) {
   if (is_value(b, 0.0)) return a;
   if (is_const(b)) return make(Op::Add, b, a);
   if (b[0].op == Op::Neg) return make(Op::Sub, a, first_child(b));
+  if (b[0].op == Op::Mul && is_const(first_child(b)) && first_child(b)[0].value < 0.0) {   // a + (-c)*x -> a - c*x
+    return make(Op::Sub, a, make(Op::Mul, leaf(-first_child(b)[0].value), second_child(b)));
+  }
   if (is_const(a) && b[0].op == Op::Add && is_const(first_child(b))) {
     return make(Op::Add, leaf(a[0].value + first_child(b)[0].value), second_child(b));
   }
   return make(Op::Add, a, b);
 }
 
-Expression rewrite_sub(const Expression& a, const Expression& b) {
+Expression rewrite_sub(const Expression& a, const Expression& b, bool algebraic) {
   if (is_value(b, 0.0)) return a;
   if (is_value(a, 0.0)) return make(Op::Neg, b);
   if (a == b) return leaf(0.0);
   if (is_const(b)) return make(Op::Add, leaf(-b[0].value), a);
   if (b[0].op == Op::Neg) return make(Op::Add, a, first_child(b));
+  if (algebraic && b[0].op == Op::Add) return make(Op::Sub, make(Op::Sub, a, first_child(b)), second_child(b));
   return make(Op::Sub, a, b);
 }
 
-Expression rewrite_mul(const Expression& a, const Expression& b) {
+// A term that already carries a constant factor: c, c*x or c/x.
+bool is_scaled(const Expression& e) {
+  return is_const(e) || ((e[0].op == Op::Mul || e[0].op == Op::Div) && is_const(first_child(e)));
+}
+
+// Algebraic: c * (c1 / x) -> (c c1) / x, and c * (a + b) -> c a + c b when both terms carry a constant.
+Expression rewrite_mul_algebraic(const Expression& a, const Expression& b) {
+  if (b[0].op == Op::Div && is_const(first_child(b))) {
+    return make(Op::Div, leaf(a[0].value * first_child(b)[0].value), second_child(b));
+  }
+  if ((b[0].op == Op::Add || b[0].op == Op::Sub) && is_scaled(first_child(b)) && is_scaled(second_child(b))) {
+    return make(b[0].op, make(Op::Mul, a, first_child(b)), make(Op::Mul, a, second_child(b)));
+  }
+  return make(Op::Mul, a, b);
+}
+
+Expression rewrite_mul(const Expression& a, const Expression& b, bool algebraic) {
   if (is_value(a, 0.0) || is_value(b, 0.0)) return leaf(0.0);
   if (is_value(a, 1.0)) return b;
   if (is_value(b, 1.0)) return a;
@@ -53,6 +73,7 @@ Expression rewrite_mul(const Expression& a, const Expression& b) {
   if (is_const(a) && b[0].op == Op::Mul && is_const(first_child(b))) {
     return make(Op::Mul, leaf(a[0].value * first_child(b)[0].value), second_child(b));
   }
+  if (algebraic && is_const(a)) return rewrite_mul_algebraic(a, b);
   return make(Op::Mul, a, b);
 }
 
@@ -68,6 +89,13 @@ Expression rewrite_div_algebraic(const Expression& a, const Expression& b) {
 
 Expression rewrite_div(const Expression& a, const Expression& b, bool algebraic) {
   if (is_value(b, 1.0)) return a;
+  // Algebraic: a / (c + k x) -> (1/k) * (a / (c/k + x)): the variable part of a denominator gets coefficient 1.
+  if (algebraic && b[0].op == Op::Add && is_const(first_child(b)) && second_child(b)[0].op == Op::Mul &&
+      is_const(second_child(b).subtree(1)) && std::abs(second_child(b).subtree(1)[0].value) > 0.0) {
+    const double k = second_child(b).subtree(1)[0].value;
+    const Expression x = second_child(b).subtree(second_child(b).subtree_end(1));
+    return make(Op::Mul, leaf(1.0 / k), make(Op::Div, a, make(Op::Add, leaf(first_child(b)[0].value / k), x)));
+  }
   if (algebraic && !is_const(b) && ((a[0].op == Op::Mul && is_const(first_child(a))) ||
                                     (b[0].op == Op::Mul && is_const(first_child(b))))) {
     return rewrite_div_algebraic(a, b);
@@ -83,10 +111,17 @@ Expression rewrite(Op op, const Expression& a, const Expression& b, bool algebra
   }
   switch (op) {
     case Op::Add: return rewrite_add(a, b);
-    case Op::Sub: return rewrite_sub(a, b);
-    case Op::Mul: return rewrite_mul(a, b);
+    case Op::Sub: return rewrite_sub(a, b, algebraic);
+    case Op::Mul: return rewrite_mul(a, b, algebraic);
     case Op::Div: return rewrite_div(a, b, algebraic);
-    case Op::Sqrt:   // Algebraic: sqrt(c * x) = sqrt(c) * sqrt(x) for c > 0 (protected sqrt uses |.| anyway)
+    case Op::Exp:   // Algebraic: exp(log a) = |a| where |a| > 0.001
+      if (algebraic && a[0].op == Op::Log) return make(Op::Abs, first_child(a));
+      return make(op, a);
+    case Op::Log:   // Algebraic: log(exp a) = a for -6.9 < a <= 230
+      if (algebraic && a[0].op == Op::Exp) return first_child(a);
+      return make(op, a);
+    case Op::Sqrt:
+      if (algebraic && a[0].op == Op::Mul && first_child(a) == second_child(a)) return make(Op::Abs, first_child(a));   // Algebraic: sqrt(c * x) = sqrt(c) * sqrt(x) for c > 0 (protected sqrt uses |.| anyway)
       if (algebraic && a[0].op == Op::Mul && is_const(first_child(a))) {
         return make(Op::Mul, leaf(std::sqrt(std::abs(first_child(a)[0].value))), make(Op::Sqrt, second_child(a)));
       }

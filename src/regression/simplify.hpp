@@ -9,8 +9,8 @@ namespace hs::regression {
 enum class SimplifyMode {
   Exact,       // only identities of the protected functions, for every finite input
   Algebraic,   // also rules of true division, (c1 * a) / (c2 * b) -> (c1/c2) * (a / b), and
-               // sqrt(c * a) -> sqrt(|c|) * sqrt(a): exact wherever no denominator is within 0.001 of zero
-               // (callers re-score the result on their data)
+               // sqrt(c * a) -> sqrt(|c|) * sqrt(a), sqrt(a * a) -> |a|, exp(log a) -> |a|, log(exp a) -> a: exact wherever no denominator is within 0.001 of zero
+               // (and no exp/log argument leaves its protected range; callers re-score the result on their data)
 };
 
 /// Bottom-up rewriting until nothing changes: folds constant subtrees (with protected semantics), removes

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "regression/compiled_program.hpp"
@@ -112,6 +113,15 @@ void SymbolicRegressor::evaluate(Individual& ind, const DataView& x, std::span<c
   }
   for (double& v : f) v = ind.model.offset + ind.model.scale * v;
   ind.loss = loss(settings_.metric, y, f);
+  if (settings_.lexicase) {
+    const std::size_t cases = static_cast<std::size_t>(std::max(1, settings_.lexicase_cases));
+    const std::size_t stride = x.rows <= cases ? 1 : (x.rows + cases - 1) / cases;
+    ind.case_errors.clear();
+    for (std::size_t i = 0; i < x.rows; i += stride) {
+      const double e = std::abs(y[i] - f[i]);
+      ind.case_errors.push_back(std::isfinite(e) ? e : HUGE_VAL);
+    }
+  }
 }
 
 Expression SymbolicRegressor::materialize(const ScaledModel& model, double y_scale) {
@@ -134,8 +144,10 @@ Expression SymbolicRegressor::materialize(const ScaledModel& model, double y_sca
 
 SymbolicRegressor::Individual SymbolicRegressor::offspring(const std::vector<Individual>& pop,
                                                           const std::vector<double>& penalised,
-                                                          const GeneticOperators& ops, Rng& rng) const {
+                                                          const GeneticOperators& ops,
+                                                          const LexicaseSelector* lexicase, Rng& rng) const {
   auto tournament = [&] {
+    if (lexicase != nullptr) return lexicase->select(rng);
     std::size_t best = pop.size();
     for (int t = 0; t < settings_.tournament_size; ++t) {
       const std::size_t j = std::uniform_int_distribution<std::size_t>(0, pop.size() - 1)(rng);
@@ -216,6 +228,16 @@ SearchResult SymbolicRegressor::fit(const DataView& x, std::span<const double> y
       if (!std::isfinite(penalised[i])) penalised[i] = std::numeric_limits<double>::infinity();
     }
     if (!fresh && settings_.penalise_duplicates) penalise_clones(pop, penalised);
+    std::unique_ptr<LexicaseSelector> lexicase;
+    if (!fresh && settings_.lexicase) {
+      std::vector<const std::vector<double>*> errors;
+      std::vector<bool> eligible;
+      for (std::size_t i = 0; i < n; ++i) {
+        errors.push_back(&pop[i].case_errors);
+        eligible.push_back(std::isfinite(penalised[i]));
+      }
+      lexicase = std::make_unique<LexicaseSelector>(std::move(errors), eligible);
+    }
 #pragma omp parallel for schedule(dynamic, 8) num_threads(std::max(1, settings_.threads))
     for (std::size_t i = 0; i < n; ++i) {
       Rng rng = rng_for(settings_.seed, gen, i);
@@ -223,7 +245,7 @@ SearchResult SymbolicRegressor::fit(const DataView& x, std::span<const double> y
         next[i] = Individual{};
         next[i].model.tree = ops.random_program(rng);
       } else {
-        next[i] = offspring(pop, penalised, ops, rng);
+        next[i] = offspring(pop, penalised, ops, lexicase.get(), rng);
       }
       if (fresh || std::isnan(next[i].loss)) evaluate(next[i], x, y, x_lm, y_lm);
     }

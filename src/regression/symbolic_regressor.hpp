@@ -9,6 +9,7 @@
 #include "regression/constant_optimizer.hpp"
 #include "regression/data_view.hpp"
 #include "regression/genetic_operators.hpp"
+#include "regression/lexicase_selector.hpp"
 #include "regression/pareto_front.hpp"
 #include "regression/search_settings.hpp"
 
@@ -40,9 +41,11 @@ class SymbolicRegressor {
     ScaledModel model;
     double loss = 0.0;
     long evaluations = 0;
+    std::vector<double> case_errors;   // |residual| on the lexicase cases (empty without lexicase)
   };
   [[nodiscard]] Individual offspring(const std::vector<Individual>& pop, const std::vector<double>& penalised,
-                                     const GeneticOperators& ops, Rng& rng) const;
+                                     const GeneticOperators& ops, const LexicaseSelector* lexicase,
+                                     Rng& rng) const;
   void record(const std::vector<Individual>& pop, const DataView& x, std::span<const double> y, double y_scale,
               ParetoFront& archive, SearchResult& result) const;
   void evaluate(Individual& ind, const DataView& x, std::span<const double> y, const DataView& x_lm,
