@@ -146,7 +146,7 @@ Verdict run_one(const Equation& eq, bool full, bool quick, int threads) {
   s.threads = threads;
   if (full) {
     s.stopping_criteria = 1e-13;   // NMSE at round-off level: the exact model is found
-    s.restarts = 8;                // 8 independent runs of 25 generations share the budget and the archive
+    s.restarts = quick ? 2 : 8;    // independent runs (25 generations each) share the budget and the archive
   } else {
     s.max_seconds = 45.0;          // gplearn has no length limit: bloat could make 200 generations take hours
   }

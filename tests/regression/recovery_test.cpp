@@ -67,6 +67,11 @@ TEST(Recovery, QuadraticPolynomial) {
   EXPECT_LT(max_relative_error(fit.expression, 1, -2.0, 2.0, truth), 1e-9) << text;
   EXPECT_LE(fit.expression.size(), 8u) << text;
   EXPECT_GT(fit.test.r2, 1.0 - 1e-12) << text;
+  // Every expression the search produced (the model and the whole Pareto front) round-trips through the parser.
+  EXPECT_EQ(hsr::parse_infix(text, {"x"}), fit.expression);
+  for (const auto& entry : fit.front) {
+    EXPECT_EQ(hsr::parse_infix(hsr::to_infix(entry.expression, {"x"}), {"x"}), entry.expression);
+  }
 }
 
 TEST(Recovery, RationalFunction) {
@@ -76,6 +81,10 @@ TEST(Recovery, RationalFunction) {
   const std::string text = hsr::to_infix(fit.expression, {"x", "y"});
   EXPECT_LT(max_relative_error(fit.expression, 2, 0.5, 3.0, truth), 1e-9) << text;   // see above
   EXPECT_LE(fit.expression.size(), 7u) << text;   // x/(1 + y) has 5 nodes; allow a scale factor
+  EXPECT_EQ(hsr::parse_infix(text, {"x", "y"}), fit.expression);
+  for (const auto& entry : fit.front) {
+    EXPECT_EQ(hsr::parse_infix(hsr::to_infix(entry.expression, {"x", "y"}), {"x", "y"}), entry.expression);
+  }
 }
 
 TEST(Recovery, SameSeedSameResultForAnyThreadCount) {
