@@ -130,7 +130,7 @@ Verdict judge(const Equation& eq, const hsr::Expression& model, double seconds) 
 // The same budget for both configurations: population x generations (quick: a smoke test).
 hsr::SearchSettings budget(hsr::SearchSettings s, bool quick, std::uint64_t seed) {
   s.population_size = quick ? 300 : 1000;
-  s.generations = quick ? 16 : 200;
+  s.generations = quick ? 16 : 400;
   s.functions.clear();   // element by element: GCC 12 warns falsely on assigning an initializer list here
   for (auto op : {hsr::Op::Add, hsr::Op::Sub, hsr::Op::Mul, hsr::Op::Div, hsr::Op::Sqrt, hsr::Op::Exp, hsr::Op::Cos}) {
     s.functions.push_back(op);
@@ -146,7 +146,7 @@ Verdict run_one(const Equation& eq, bool full, bool quick, int threads) {
   s.threads = threads;
   if (full) {
     s.stopping_criteria = 1e-13;   // NMSE at round-off level: the exact model is found
-    s.restarts = quick ? 2 : 8;    // independent runs (25 generations each) share the budget and the archive
+    s.restarts = quick ? 2 : 10;   // independent runs (40 generations each) share the budget and the archive
   } else {
     s.max_seconds = 45.0;          // gplearn has no length limit: bloat could make 200 generations take hours
   }
