@@ -105,7 +105,22 @@ TEST(Recovery, SameSeedSameResultForAnyThreadCount) {
   for (std::size_t i = 0; i < one.front.size(); ++i) EXPECT_EQ(one.front[i].expression, two.front[i].expression);
 }
 
-TEST(Recovery, GplearnDefaultsRunAndDifferBySeed) {
+TEST(Recovery, LexicaseAndRestartsAreReproducibleToo) {
+  auto truth = [](const double* v) { return v[0] * v[1] - v[0]; };
+  const Data d = sample(60, 2, -1.0, 1.0, 6, truth);
+  auto s = small_full_engine(8, 1);
+  s.generations = 6;
+  s.restarts = 2;
+  s.lexicase = true;
+  s.stopping_criteria = 0.0;
+  const auto one = hsr::fit_validated(s, {}, d.x, d.y);
+  s.threads = 2;
+  const auto two = hsr::fit_validated(s, {}, d.x, d.y);
+  EXPECT_EQ(one.expression, two.expression);
+  EXPECT_EQ(one.search.evaluations, two.search.evaluations);
+}
+
+TEST(Recovery, GplearnDefaultsRunReproducibly) {
   auto truth = [](const double* v) { return v[0] * v[0] + v[0]; };
   const Data d = sample(50, 1, -1.0, 1.0, 4, truth);
   auto s = hsr::gplearn_defaults();
