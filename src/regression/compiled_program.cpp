@@ -54,9 +54,13 @@ CompiledProgram::CompiledProgram(const Expression& e) {
     const Node& n = e[i];
     std::size_t end = i + 1;
     if (arity(n.op) >= 1) end = self(self, end, slot);
+    if (arity(n.op) == 2 && e[end].op == Op::Var) {   // fused: the op reads the feature column in place
+      code_.push_back({n.op, e[end].var, static_cast<std::uint16_t>(slot), 0.0, true});
+      return end + 1;
+    }
     if (arity(n.op) == 2) end = self(self, end, slot + 1);
     if (n.op == Op::Const) constant_slots_.push_back(code_.size());
-    code_.push_back({n.op, n.var, static_cast<std::uint16_t>(slot), n.value});
+    code_.push_back({n.op, n.var, static_cast<std::uint16_t>(slot), n.value, false});
     return end;
   };
   compile(compile, 0, 0);
@@ -75,7 +79,9 @@ void CompiledProgram::evaluate_block(const DataView& data, std::size_t row0, std
       case Op::Const: std::fill(d, d + len, in.value); break;
       case Op::Var: std::memcpy(d, data.columns[in.var] + row0, len * sizeof(double)); break;
       default:
-        if (arity(in.op) == 2) {
+        if (in.var_operand) {
+          run_binary(in.op, d, data.columns[in.var] + row0, len);
+        } else if (arity(in.op) == 2) {
           run_binary(in.op, d, d + block_rows, len);
         } else {
           run_unary(in.op, d, len);
@@ -110,7 +116,7 @@ double CompiledProgram::evaluate_point(const double* x) const {
     } else if (in.op == Op::Var) {
       d = x[in.var];
     } else {
-      d = apply(in.op, d, arity(in.op) == 2 ? s[in.dst + 1] : 0.0);
+      d = apply(in.op, d, in.var_operand ? x[in.var] : arity(in.op) == 2 ? s[in.dst + 1] : 0.0);
     }
   }
   return s[0];

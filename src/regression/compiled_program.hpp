@@ -37,8 +37,9 @@ class CompiledProgram {
   struct Instruction {
     Op op;
     std::uint16_t var;
-    std::uint16_t dst;   // slot written; binary ops read dst and dst + 1, unary ops read dst
+    std::uint16_t dst;          // slot written; binary ops read dst and dst + 1, unary ops read dst
     double value;
+    bool var_operand = false;   // binary op whose second argument is feature `var`, read in place
   };
   void evaluate_block(const DataView& data, std::size_t row0, std::size_t len, double* stack, double* out) const;
 
