@@ -15,5 +15,6 @@ void add_run_command(CLI::App& cli, Action& action);
 void add_bench_command(CLI::App& cli, Action& action);
 void add_validate_command(CLI::App& cli, Action& action);
 void add_campaign_command(CLI::App& cli, Action& action);
+void add_fit_command(CLI::App& cli, Action& action);
 
 }  // namespace hs::app

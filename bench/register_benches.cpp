@@ -5,6 +5,7 @@
 #include "bench/lbm_bench.hpp"
 #include "bench/npfem_bench.hpp"
 #include "bench/fvm_bench.hpp"
+#include "bench/regression_bench.hpp"
 
 namespace hs::app {
 
@@ -14,6 +15,7 @@ std::map<std::string, TaskEntry> benchmarks() {
   r["npfem"] = {"npFEM membrane step at 258 and 642 vertices (us/step, us/iteration, factorisation)", hs::resolved::bench_npfem};
   r["dem"] = {"DEM ns per particle-step, 1e5 Hertz spheres (in.rbcpack), vs LIGGGHTS", hs::bench::run_dem_bench};
   r["fvm"] = {"PISO fluid on the 3D lid-driven cube vs OpenFOAM icoFoam (ns per cell-step)", hs::bench::run_fvm_bench};
+  r["regression"] = {"symbolic regression: 10 Feynman equations, gplearn vs full engine; evaluator speed", hs::bench::run_regression_bench};
   return r;
 }
 

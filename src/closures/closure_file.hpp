@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// A learned closure on disk (DESIGN.md "Inputs and outputs", STYLE R12): infix expression, variables with
+// definitions, validity range, fit metrics, Pareto front and provenance, read strictly and written back.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "closures/closure_inputs.hpp"
+#include "regression/expression.hpp"
+
+namespace hs::closures {
+
+struct ParetoPoint {
+  std::size_t complexity = 0;
+  double loss = 0.0;      // training loss of the search metric
+  double cv_loss = 0.0;   // cross-validated loss (= loss when no CV)
+  std::string expression;
+};
+
+struct ClosureFile {
+  std::string name;
+  std::string kind;                         // drag | lift | deformation | generic
+  std::string output;                       // what the expression gives: C_d, C_l, DI, or a column name
+  std::string expression;                   // infix; round-trips through regression::parse_infix
+  std::vector<std::string> variables;       // expression variable names (feature order)
+  std::vector<std::string> definitions;     // one per variable
+  std::vector<Interval> validity;           // one per variable: min/max of the training inputs
+  std::map<std::string, double> fit;        // r2_train, r2_cv, r2_test, rmse_*, mae_*, n_train, ...
+  std::vector<ParetoPoint> pareto;
+  std::string dataset;                      // provenance
+  std::string dataset_sha256;
+  std::int64_t seed = 0;
+  std::int64_t threads = 1;
+  std::string hemoscale_version;
+  std::string git_commit;
+
+  /// Reads and checks a closure file. Throws hs::common::ConfigError naming file and key for: malformed TOML,
+  /// a missing key or section, an unknown key, a variable that is not a closure input (kinds other than
+  /// generic), an expression that does not parse or names an undeclared variable, a variable without a
+  /// validity range, a range with lo > hi, or a Pareto front whose lists differ in length.
+  [[nodiscard]] static ClosureFile load(const std::filesystem::path& file);
+  /// Writes the file (atomically); load(write(c)) == c up to the shortest round-trip printing of numbers.
+  void write(const std::filesystem::path& file) const;
+  /// The parsed expression (feature j = variables[j]).
+  [[nodiscard]] hs::regression::Expression parsed() const;
+};
+
+}  // namespace hs::closures

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: MIT
+// Fitting a closure from a dataset and writing the closure file and its companions.
+#include "closures/closure_fit.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "build_info.hpp"
+#include "closures/sha256.hpp"
+#include "common/errors.hpp"
+#include "common/io/csv_writer.hpp"
+#include "common/run_folder.hpp"
+#include "regression/compiled_program.hpp"
+#include "regression/infix.hpp"
+
+namespace hs::closures {
+namespace {
+
+namespace hsr = hs::regression;
+using hs::common::ConfigError;
+
+struct Table {
+  std::vector<std::vector<double>> x;
+  std::vector<double> y;
+};
+
+Table load_dataset(const FitRequest& r) {
+  const auto csv = hs::common::read_csv(r.dataset);
+  auto column = [&](const std::string& name, const char* key) {
+    if (csv.column_index(name) < 0) {
+      std::string known;
+      for (const auto& c : csv.columns) known += (known.empty() ? "" : ", ") + c;
+      throw ConfigError(fmt::format("{}: [data] {} = \"{}\": no such column in {} (columns: {})", r.fit_file.string(),
+                                    key, name, r.dataset.string(), known));
+    }
+    auto v = csv.column(name);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (!std::isfinite(v[i])) {
+        throw ConfigError(fmt::format("{}: column \"{}\" row {} is not a finite number", r.dataset.string(), name, i + 1));
+      }
+    }
+    return v;
+  };
+  Table t;
+  for (const auto& f : r.features) t.x.push_back(column(f, "features"));
+  t.y = column(r.target, "target");
+  if (t.y.size() < 10) throw ConfigError(fmt::format("{}: {} rows; at least 10 are needed", r.dataset.string(), t.y.size()));
+  return t;
+}
+
+void add_scores(ClosureFile& c, const char* tag, const hsr::Scores& s) {
+  c.fit[fmt::format("r2_{}", tag)] = s.r2;
+  c.fit[fmt::format("rmse_{}", tag)] = s.rmse;
+  c.fit[fmt::format("mae_{}", tag)] = s.mae;
+}
+
+ClosureFile make_closure(const FitRequest& r, const Table& t, const hsr::ValidatedModel& m) {
+  ClosureFile c;
+  c.name = r.name;
+  c.kind = r.kind;
+  c.output = r.output;
+  c.expression = hsr::to_infix(m.expression, r.features);
+  if (!(hsr::parse_infix(c.expression, r.features) == m.expression)) {
+    throw std::logic_error("closure expression does not round-trip through the parser: " + c.expression);
+  }
+  c.variables = r.features;
+  c.definitions = r.definitions;
+  for (const auto& col : t.x) {
+    Interval range{HUGE_VAL, -HUGE_VAL};
+    for (std::size_t i : m.split.train) range = {std::min(range.lo, col[i]), std::max(range.hi, col[i])};
+    c.validity.push_back(range);
+  }
+  add_scores(c, "train", m.train);
+  add_scores(c, "cv", m.cv);
+  add_scores(c, "test", m.test);
+  c.fit["complexity"] = static_cast<double>(m.expression.size());
+  c.fit["n_train"] = static_cast<double>(m.split.train.size());
+  c.fit["n_test"] = static_cast<double>(m.split.test.size());
+  c.fit["folds"] = r.validation.folds;
+  c.fit["generations_run"] = m.search.generations_run;
+  c.fit["evaluations"] = static_cast<double>(m.search.evaluations);
+  for (const auto& p : m.front) {
+    c.pareto.push_back({p.complexity, p.loss, p.cv_loss, hsr::to_infix(p.expression, r.features)});
+  }
+  c.dataset = r.dataset.lexically_normal().string();   // run_fit makes it relative to the closure file
+  c.dataset_sha256 = sha256_file(r.dataset);
+  c.seed = static_cast<std::int64_t>(r.search.seed);
+  c.threads = r.search.threads;
+  c.hemoscale_version = hs::common::build_info::version;
+  c.git_commit = hs::common::build_info::git_commit;
+  return c;
+}
+
+void write_tables(const std::filesystem::path& dir, const FitRequest& r, const Table& t, const hsr::ValidatedModel& m,
+                  const ClosureFile& c) {
+  std::vector<double> p(t.y.size());
+  hsr::ColumnData data(t.x);
+  hsr::CompiledProgram(m.expression).evaluate(data.view(), p);
+  std::vector<std::string> cols{"is_test", r.target, "prediction"};
+  cols.insert(cols.end(), r.features.begin(), r.features.end());
+  hs::common::CsvWriter pred(dir / "predictions.csv", cols);
+  std::vector<bool> is_test(t.y.size(), false);
+  for (std::size_t i : m.split.test) is_test[i] = true;
+  for (std::size_t i = 0; i < t.y.size(); ++i) {
+    std::vector<double> row{is_test[i] ? 1.0 : 0.0, t.y[i], p[i]};
+    for (const auto& col : t.x) row.push_back(col[i]);
+    pred.row(row);
+  }
+  hs::common::CsvWriter pareto(dir / "pareto.csv", {"complexity", "loss", "cv_loss"});
+  for (const auto& e : c.pareto) pareto.row({static_cast<double>(e.complexity), e.loss, e.cv_loss});
+  std::ofstream ref(dir / (r.name + ".reference.csv"));
+  for (const auto& f : r.features) ref << f << ",";
+  ref << "expected,source\n";
+  for (std::size_t i : m.split.test) {
+    for (const auto& col : t.x) ref << fmt::format("{},", col[i]);
+    ref << fmt::format("{},{}.toml\n", p[i], r.name);
+  }
+}
+
+}  // namespace
+
+ClosureFile run_fit(const FitRequest& request, const std::filesystem::path& out_dir, bool quiet) {
+  const Table table = load_dataset(request);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto model = hsr::fit_validated(request.search, request.validation, table.x, table.y);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ClosureFile closure = make_closure(request, table, model);
+  std::filesystem::create_directories(out_dir);
+  closure.dataset = std::filesystem::relative(std::filesystem::absolute(request.dataset), std::filesystem::absolute(out_dir))
+                        .lexically_normal()
+                        .string();
+  closure.write(out_dir / (request.name + ".toml"));
+  write_tables(out_dir, request, table, model, closure);
+  nlohmann::json summary{{"name", closure.name},        {"kind", closure.kind},
+                         {"expression", closure.expression}, {"fit", closure.fit},
+                         {"seconds", seconds},          {"dataset", closure.dataset},
+                         {"dataset_sha256", closure.dataset_sha256}, {"seed", closure.seed},
+                         {"threads", closure.threads},  {"provenance", hs::common::provenance()}};
+  hs::common::write_json(out_dir / "summary.json", summary);
+  if (!quiet) {
+    fmt::print("{} = {}\n  R2 train {:.6f}, cv {:.6f}, test {:.6f}; {} generations, {:.1f} s\n", closure.output,
+               closure.expression, model.train.r2, model.cv.r2, model.test.r2, model.search.generations_run, seconds);
+  }
+  return closure;
+}
+
+std::string check_closure(const std::filesystem::path& file) {
+  const ClosureFile c = ClosureFile::load(file);
+  std::string out = fmt::format("{} ({}): {} = {}\n", c.name, c.kind, c.output, c.expression);
+  for (std::size_t j = 0; j < c.variables.size(); ++j) {
+    out += fmt::format("  {} in [{}, {}]: {}\n", c.variables[j], c.validity[j].lo, c.validity[j].hi, c.definitions[j]);
+  }
+  const auto table = file.parent_path() / (c.name + ".reference.csv");
+  if (!std::filesystem::exists(table)) return out + "  (no reference table beside it)\n";
+  const auto csv = hs::common::read_csv(table);
+  const hsr::CompiledProgram program(c.parsed());
+  std::vector<double> x(c.variables.size());
+  for (const auto& row : csv.rows) {
+    for (std::size_t j = 0; j < x.size(); ++j) x[j] = row[static_cast<std::size_t>(csv.column_index(c.variables[j]))];
+    const double expected = row[static_cast<std::size_t>(csv.column_index("expected"))];
+    const double got = program.evaluate_point(x.data());
+    // The table was written by the same evaluator; 1e-12 relative allows for a rebuilt compiler's rounding.
+    if (!(std::abs(got - expected) <= 1e-12 * std::max(std::abs(expected), 1e-300))) {
+      throw hs::common::NumericalError(fmt::format("{}: expression gives {} where {} expects {}", file.string(), got,
+                                                   table.string(), expected));
+    }
+  }
+  return out + fmt::format("  reproduces its reference table ({} rows)\n", csv.rows.size());
+}
+
+bool render_fit_report(const std::filesystem::path& out_dir) {
+  const std::filesystem::path python = "/usr/bin/python3";
+  const std::filesystem::path script = std::filesystem::path(HS_TOOLS_DIR) / "plot_fit.py";
+  if (!std::filesystem::exists(python) || !std::filesystem::exists(script)) return false;
+  const std::string cmd = fmt::format("\"{}\" \"{}\" \"{}\" > /dev/null 2>&1", python.string(), script.string(),
+                                      out_dir.string());
+  return std::system(cmd.c_str()) == 0 && std::filesystem::exists(out_dir / "report.png");
+}
+
+}  // namespace hs::closures

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Name -> factory lists for interchangeable closures (STYLE R5), filled by register_builtin().
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "common/config/config_file.hpp"
+#include "common/errors.hpp"
+
+namespace hs::closures {
+
+/// What a case file says about one closure: `[coupling.drag] model = "expression"  file = "cd.toml"`.
+struct ClosureSpec {
+  std::string model;
+  std::filesystem::path file;   // closure file, for model = "expression" (absolute)
+};
+
+/// Reads `model` and, when present, `file` (relative to the case file) from a case-file section.
+[[nodiscard]] inline ClosureSpec read_closure_spec(hs::common::ConfigSection& section) {
+  ClosureSpec spec{.model = section.string("model"), .file = {}};
+  if (section.has("file") || spec.model == "expression") spec.file = section.file_path("file");
+  return spec;
+}
+
+template <class T>
+class ClosureRegistry {
+ public:
+  using Factory = std::function<std::unique_ptr<T>(const ClosureSpec&)>;
+
+  void add(std::string name, Factory factory) { factories_[std::move(name)] = std::move(factory); }
+  /// The closure `spec.model`; an unknown name is a ConfigError listing the known ones.
+  [[nodiscard]] std::unique_ptr<T> create(const ClosureSpec& spec) const {
+    const auto it = factories_.find(spec.model);
+    if (it == factories_.end()) {
+      std::string known;
+      for (const auto& [name, f] : factories_) known += (known.empty() ? "" : ", ") + name;
+      throw hs::common::ConfigError(fmt::format("unknown closure model \"{}\" (known: {})", spec.model, known));
+    }
+    return it->second(spec);
+  }
+  [[nodiscard]] bool has(const std::string& name) const { return factories_.count(name) > 0; }
+
+ private:
+  std::map<std::string, Factory> factories_;
+};
+
+}  // namespace hs::closures

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// Reading FIT.toml into a FitRequest.
+#include "closures/fit_request.hpp"
+
+#include <fmt/format.h>
+
+#include "closures/closure_inputs.hpp"
+#include "common/config/config_file.hpp"
+
+namespace hs::closures {
+namespace {
+
+using hs::common::ConfigSection;
+namespace hsr = hs::regression;
+
+std::vector<hsr::Op> read_functions(ConfigSection& s, const std::vector<hsr::Op>& defaults) {
+  if (!s.has("functions")) return defaults;
+  std::vector<hsr::Op> out;
+  for (const auto& name : s.strings("functions")) {
+    const auto op = hsr::op_from_name(name);
+    if (!op) {
+      std::string known;
+      for (hsr::Op f : hsr::all_functions()) known += (known.empty() ? "" : ", ") + std::string(hsr::op_name(f));
+      s.fail("functions", fmt::format("unknown function \"{}\" (allowed: {})", name, known));
+    }
+    out.push_back(*op);
+  }
+  return out;
+}
+
+void read_probabilities(ConfigSection& s, hsr::SearchSettings& r) {
+  r.p_crossover = s.number_in_or("p_crossover", 0.0, 1.0, r.p_crossover);
+  r.p_subtree_mutation = s.number_in_or("p_subtree_mutation", 0.0, 1.0, r.p_subtree_mutation);
+  r.p_hoist_mutation = s.number_in_or("p_hoist_mutation", 0.0, 1.0, r.p_hoist_mutation);
+  r.p_point_mutation = s.number_in_or("p_point_mutation", 0.0, 1.0, r.p_point_mutation);
+  r.p_point_replace = s.number_in_or("p_point_replace", 0.0, 1.0, r.p_point_replace);
+  const double sum = r.p_crossover + r.p_subtree_mutation + r.p_hoist_mutation + r.p_point_mutation;
+  if (sum > 1.0 + 1e-12) s.fail("p_crossover", fmt::format("the four operator probabilities add up to {} > 1", sum));
+}
+
+hsr::SearchSettings read_search(ConfigSection s) {
+  const std::string engine = s.one_of_or("engine", {"full", "gplearn"}, "full");
+  hsr::SearchSettings r = engine == "full" ? hsr::full_engine_defaults() : hsr::gplearn_defaults();
+  r.functions = read_functions(s, r.functions);
+  r.population_size = static_cast<int>(s.integer_in_or("population_size", 2, 10'000'000, r.population_size));
+  r.generations = static_cast<int>(s.integer_in_or("generations", 1, 1'000'000, r.generations));
+  r.tournament_size = static_cast<int>(s.integer_in_or("tournament_size", 1, r.population_size, r.tournament_size));
+  const auto cr = s.has("const_range") ? s.numbers_in("const_range", -1e12, 1e12, 2) : std::vector{r.const_lo, r.const_hi};
+  if (cr.size() != 2 || cr[0] > cr[1]) s.fail("const_range", "must be [lo, hi] with lo <= hi");
+  r.const_lo = cr[0];
+  r.const_hi = cr[1];
+  r.use_constants = s.boolean_or("use_constants", r.use_constants);
+  const auto depth = s.has("init_depth") ? s.numbers_in("init_depth", 1, 20, 2) : std::vector<double>{2.0, 6.0};
+  if (depth.size() != 2 || depth[0] > depth[1]) s.fail("init_depth", "must be [lo, hi] with 1 <= lo <= hi <= 20");
+  r.init_depth_lo = static_cast<int>(depth[0]);
+  r.init_depth_hi = static_cast<int>(depth[1]);
+  r.metric = hsr::metric_from_name(s.one_of_or("metric", {"mae", "mse", "rmse", "r2"}, hsr::metric_name(r.metric)));
+  const bool auto_parsimony = s.boolean_or("parsimony_auto", false);
+  r.parsimony_coefficient = auto_parsimony ? -1.0 : s.non_negative_or("parsimony_coefficient", r.parsimony_coefficient);
+  read_probabilities(s, r);
+  r.stopping_criteria = s.non_negative_or("stopping_criteria", r.stopping_criteria);
+  r.max_length = static_cast<int>(s.integer_in_or("max_length", 0, 100000, r.max_length));
+  r.linear_scaling = s.boolean_or("linear_scaling", r.linear_scaling);
+  r.lm_iterations = static_cast<int>(s.integer_in_or("lm_iterations", 0, 1000, r.lm_iterations));
+  r.max_seconds = s.non_negative_or("max_seconds", r.max_seconds);
+  r.restarts = static_cast<int>(s.integer_in_or("restarts", 1, 1000, r.restarts));
+  r.lexicase = s.boolean_or("lexicase", r.lexicase);
+  r.penalise_duplicates = s.boolean_or("penalise_duplicates", r.penalise_duplicates);
+  r.lm_max_rows = static_cast<int>(s.integer_in_or("lm_max_rows", 1, 1 << 30, r.lm_max_rows));
+  r.selection_tolerance = s.number_in_or("selection_tolerance", 1.0, 1e6, r.selection_tolerance);
+  r.seed = static_cast<std::uint64_t>(s.integer_in_or("seed", 0, std::numeric_limits<long>::max(), 0));
+  r.threads = static_cast<int>(s.integer_in_or("threads", 1, 1024, 1));
+  return r;
+}
+
+void read_data(ConfigSection root, FitRequest& r) {
+  auto data = root.section("data");
+  r.dataset = data.file_path("file");
+  r.target = data.string("target");
+  r.features = data.strings("features");
+  r.validation.test_fraction = data.number_in_or("test_fraction", 0.0, 0.9, 0.2);
+  r.validation.folds = static_cast<int>(data.integer_in_or("folds", 0, 100, 5));
+}
+
+void read_closure(ConfigSection root, FitRequest& r) {
+  auto c = root.section("closure");
+  r.name = c.string("name");
+  r.kind = c.one_of("kind", {"drag", "lift", "deformation", "generic"});
+  const std::string default_output = r.kind == "drag" ? "C_d" : r.kind == "lift" ? "C_l" : r.kind == "deformation" ? "DI" : r.target;
+  r.output = c.string_or("output", default_output);
+  auto vars = root.section_or_empty("variables");
+  for (const auto& f : r.features) {
+    const auto input = find_input(f);
+    if (r.kind != "generic" && !input) {
+      root.section("data").fail("features", fmt::format("\"{}\" is not a closure input; use kind = \"generic\"", f));
+    }
+    const std::string fallback = input ? std::string(input->definition) : fmt::format("column {} of the dataset", f);
+    r.definitions.push_back(vars.string_or(f, fallback));
+  }
+}
+
+}  // namespace
+
+FitRequest read_fit_request(const std::filesystem::path& file) {
+  auto config = hs::common::ConfigFile::load(file);
+  auto root = config->root();
+  FitRequest r;
+  r.fit_file = file;
+  read_data(root, r);
+  read_closure(root, r);
+  r.search = read_search(root.section_or_empty("search"));
+  r.validation.select_from_front = true;
+  r.plot = root.section_or_empty("output").boolean_or("plot", true);
+  config->finish();
+  return r;
+}
+
+}  // namespace hs::closures

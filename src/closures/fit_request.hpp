@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// A fit file (FIT.toml) for `hemoscale fit`, read strictly into typed settings.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "regression/model_selection.hpp"
+#include "regression/search_settings.hpp"
+
+namespace hs::closures {
+
+/// FIT.toml:
+///   [data]    file = "dataset.csv" (relative to FIT.toml), target = "cd", features = ["di", "re_p"],
+///             test_fraction = 0.2, folds = 5
+///   [closure] name = "cd_di_rep", kind = "drag" | "lift" | "deformation" | "generic", output = "C_d"
+///   [variables] optional definitions per feature (closure inputs have built-in ones)
+///   [search]  engine = "full" | "gplearn" (which defaults), then any of: functions, population_size,
+///             generations, tournament_size, const_range, init_depth, metric, parsimony_coefficient
+///             (or "auto"), p_crossover, p_subtree_mutation, p_hoist_mutation, p_point_mutation,
+///             p_point_replace, stopping_criteria, max_length, linear_scaling, lm_iterations, lm_max_rows,
+///             max_seconds, selection_tolerance, restarts, lexicase, penalise_duplicates, seed, threads
+///   [output]  plot = true
+struct FitRequest {
+  std::filesystem::path fit_file;
+  std::filesystem::path dataset;
+  std::string target;
+  std::vector<std::string> features;
+  std::vector<std::string> definitions;   // one per feature
+  std::string name, kind, output;
+  hs::regression::SearchSettings search;
+  hs::regression::ValidationSettings validation;
+  bool plot = true;
+};
+
+/// Throws hs::common::ConfigError (file, key, value, what is allowed) for any bad or unknown key.
+[[nodiscard]] FitRequest read_fit_request(const std::filesystem::path& file);
+
+}  // namespace hs::closures

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale fit` as a user meets it: a fit writes a closure that checks clean; bad files exit with code 2.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code;
+  std::string output;
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(HS_BIN) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path write(const std::string& name, const std::string& text) {
+  const fs::path p = fs::temp_directory_path() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+}  // namespace
+
+TEST(FitCli, FitsTheLiftCaseAndTheClosureChecksClean) {
+  const fs::path out = fs::temp_directory_path() / "hs_fit_cli_lift";
+  fs::remove_all(out);
+  const auto fit = run("fit " + std::string(HS_SOURCE_DIR) + "/cases/regression/lift_coefficient/fit.toml --no-plot -q -o " +
+                       out.string());
+  ASSERT_EQ(fit.code, 0) << fit.output;
+  const auto check = run("fit --check " + (out / "cl_di_rep.toml").string());
+  EXPECT_EQ(check.code, 0) << check.output;
+  EXPECT_NE(check.output.find("reproduces its reference table"), std::string::npos) << check.output;
+}
+
+TEST(FitCli, BadClosureFileExitsWithCode2) {
+  const auto bad = write("hs_cli_bad_closure.toml",
+                         "name = \"x\"\nkind = \"drag\"\noutput = \"C_d\"\nexpression = \"24/re_pp\"\n"
+                         "[variables]\nre_p = \"Re_p\"\n[validity]\nre_p = [0.01, 0.1]\n");
+  const auto r = run("fit --check " + bad.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("re_pp"), std::string::npos) << r.output;
+  const auto no_validity = write("hs_cli_no_validity.toml", "name = \"x\"\nkind = \"drag\"\noutput = \"C_d\"\n"
+                                                             "expression = \"24/re_p\"\n[variables]\nre_p = \"Re_p\"\n");
+  const auto v = run("fit --check " + no_validity.string());
+  EXPECT_EQ(v.code, 2) << v.output;
+  EXPECT_NE(v.output.find("validity"), std::string::npos) << v.output;
+}
+
+TEST(FitCli, BadFitFileExitsWithCode2) {
+  const auto bad = write("hs_cli_bad_fit.toml", "[data]\nfile = \"nope.csv\"\ntarget = \"y\"\nfeatures = [\"x\"]\n"
+                                                "[closure]\nname = \"y\"\nkind = \"generic\"\n[search]\npopulaton_size = 10\n");
+  const auto r = run("fit " + bad.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("populaton_size"), std::string::npos) << r.output;
+}

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Learned closures evaluate their expression on the inputs they declare and count out-of-range use.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include <vector>
+
+#include "closures/register_builtin.hpp"
+
+namespace fs = std::filesystem;
+namespace hc = hs::closures;
+
+namespace {
+
+fs::path drag_file() {
+  const fs::path p = fs::temp_directory_path() / "hs_learned_drag.toml";
+  std::ofstream(p) << "name = \"cd\"\nkind = \"drag\"\noutput = \"C_d\"\nexpression = \"24/re_p*(1 + 0.5*di)\"\n"
+                      "[variables]\nre_p = \"Re_p\"\ndi = \"DI\"\n[validity]\nre_p = [0.01, 0.12]\ndi = [0.1, 0.5]\n";
+  return p;
+}
+
+}  // namespace
+
+TEST(ExpressionDrag, EvaluatesTheFormulaAndItsCorrection) {
+  const auto drag = hc::make_drag_closure({.model = "expression", .file = drag_file()});
+  const hc::DragInputs in{.re_p = 0.05, .di = 0.3};
+  EXPECT_DOUBLE_EQ(drag->drag_coefficient(in), 24.0 / 0.05 * (1.0 + 0.5 * 0.3));
+  EXPECT_DOUBLE_EQ(drag->correction(in), 24.0 / 0.05 * (1.0 + 0.5 * 0.3) * 0.05 / 24.0);
+  EXPECT_EQ(drag->name(), "cd");
+}
+
+TEST(ExpressionDrag, CountsEvaluationsOutsideValidityFromManyThreads) {
+  const auto drag = hc::make_drag_closure({.model = "expression", .file = drag_file()});
+  std::vector<std::thread> pool;
+  for (int t = 0; t < 4; ++t) {
+    pool.emplace_back([&drag] {
+      for (int i = 0; i < 1000; ++i) {
+        (void)drag->drag_coefficient({.re_p = i % 2 == 0 ? 0.05 : 0.5, .di = 0.3});   // every other one outside
+      }
+    });
+  }
+  for (auto& t : pool) t.join();
+  EXPECT_EQ(drag->evaluations(), 4000);
+  EXPECT_EQ(drag->outside_validity(), 2000);
+}
