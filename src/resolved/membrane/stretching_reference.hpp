@@ -16,7 +16,7 @@ struct StretchingBandPoint {
   [[nodiscard]] bool transverse_inside(double d_m) const { return d_m >= transverse_lower_m && d_m <= transverse_upper_m; }
 };
 
-/// Reads data/validation/mills2004_rbc_stretch_experiment.csv (force in pN, diameters in um; converted to SI).
+/// Reads data/reference/mills2004_rbc_stretch_experiment.csv (force in pN, diameters in um; converted to SI).
 /// Throws ConfigError if the file or a column is missing.
 [[nodiscard]] std::vector<StretchingBandPoint> read_stretching_band(const std::filesystem::path& csv);
 /// The copy committed with the source tree (absolute path fixed at build time).

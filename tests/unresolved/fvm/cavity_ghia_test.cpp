@@ -46,7 +46,7 @@ TEST(CavityGhia, Re100CentrelinesMatchGhia1982) {
   FvmSolver solver(grid, {.density_kg_m3 = 1.0, .kinematic_viscosity_m2_s = 0.01}, {.dt_s = 0.5 / n}, {});
   const long steps = static_cast<long>(25.0 * n / 0.5);
   for (long s = 0; s < steps; ++s) solver.step();
-  const auto shared = std::string(HS_SHARED_DIR) + "/reference/validation/";
+  const auto shared = std::string(HS_SOURCE_DIR) + "/data/reference/";
   const auto u_ref = hs::common::read_csv(shared + "ghia1982_cavity_u_vertical_centreline.csv");
   const auto v_ref = hs::common::read_csv(shared + "ghia1982_cavity_v_horizontal_centreline.csv");
   const double z = 0.5 / n;
