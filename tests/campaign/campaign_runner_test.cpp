@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// A real (small) campaign of tube-poiseuille runs: every run done once, a bad point recorded as failed with
+// its reason, the dataset assembled, and a second invocation on the finished folder doing nothing.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "campaign/campaign_spec.hpp"
+#include "common/errors.hpp"
+#include "common/io/csv_writer.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code;
+  std::string output;
+};
+
+Result run(const std::string& args) {
+  FILE* pipe = popen((std::string(HS_BIN) + " " + args + " 2>&1").c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+/// A 5-lattice-spacing tube: each run reaches steady state in about a hundred steps.
+fs::path make_campaign(const std::string& name, const std::string& reynolds_values) {
+  const auto dir = fs::temp_directory_path() / ("hs_campaign_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.toml") << R"([case]
+type = "tube-poiseuille"
+[geometry]
+radius_m = 5.0e-6
+length_m = 4.0e-6
+[fluid]
+density_kg_m3 = 1025.0
+kinematic_viscosity_m2_s = 1.0e-6
+[flow]
+reynolds = 0.5
+[numerics]
+dx_m = 1.0e-6
+tau = 2.5
+[output]
+vtk_frames = 1
+)";
+  std::ofstream(dir / "campaign.toml") << "[campaign]\nname = \"test\"\ntemplate = \"case.toml\"\njobs = 2\n"
+                                       << "[grid.re]\nkey = \"flow.reynolds\"\nvalues = " << reynolds_values << "\n"
+                                       << "[dataset]\nfile = \"dataset.csv\"\nrow_axes = \"re\"\n"
+                                       << "[dataset.columns.u_max_m_s]\npointer = \"/u_max_m_s\"\n"
+                                       << "[dataset.columns.u_max_analytic_m_s]\npointer = \"/u_max_analytic_m_s\"\n";
+  return dir;
+}
+
+}  // namespace
+
+TEST(Campaign, RunsEveryPointOnceAndAssemblesTheDataset) {
+  const auto dir = make_campaign("ok", "[0.1, 0.2]");
+  const auto first = run("campaign " + dir.string());
+  ASSERT_EQ(first.code, 0) << first.output;
+  const auto table = hs::common::read_csv(dir / "dataset.csv");
+  ASSERT_EQ(table.rows.size(), 2u);
+  // Poiseuille at R = 5 lattice spacings: the run's own check holds u_max to its tolerance; here only that the
+  // dataset carries the run's numbers (not a re-derivation): U_max = Re nu / D.
+  EXPECT_NEAR(table.column("u_max_analytic_m_s")[0], 0.1 * 1e-6 / 10e-6, 1e-15);
+  EXPECT_NEAR(table.column("u_max_m_s")[1] / table.column("u_max_analytic_m_s")[1], 1.0, 0.05);
+  const auto mtime = fs::last_write_time(dir / "runs" / "re-0.1" / "status.json");
+  const auto second = run("campaign " + dir.string());   // a finished campaign: nothing to do, exit 0
+  EXPECT_EQ(second.code, 0) << second.output;
+  EXPECT_EQ(fs::last_write_time(dir / "runs" / "re-0.1" / "status.json"), mtime);
+  EXPECT_NE(second.output.find("2 done"), std::string::npos) << second.output;
+}
+
+TEST(Campaign, AFailedRunIsRecordedAndDoesNotStopTheOthers) {
+  const auto dir = make_campaign("fail", "[0.2, 5000.0]");   // Re = 5000: lattice Mach far above 0.1
+  const auto r = run("campaign " + dir.string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  const auto status = run("campaign " + dir.string() + " --status");
+  EXPECT_NE(status.output.find("1 done, 1 failed"), std::string::npos) << status.output;
+  EXPECT_NE(status.output.find("Mach"), std::string::npos) << status.output;   // the reason, from the run's message
+  EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").rows.size(), 1u);
+}
+
+TEST(Campaign, BadCampaignFileIsAConfigError) {
+  const auto dir = make_campaign("bad", "[0.1]");
+  std::ofstream(dir / "campaign.toml", std::ios::app) << "[dataset.columns.x]\npointer = \"/x\"\nonly_axis = \"nope\"\n";
+  EXPECT_THROW(hs::campaign::read_campaign_spec(dir), hs::common::ConfigError);
+}
