@@ -2,6 +2,8 @@
 // The command line as a user meets it: help, version, and exit code 2 with a clear message on bad input.
 #include <gtest/gtest.h>
 
+#include "support/run_command.hpp"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -14,20 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string output;
-};
-
-Result run(const std::string& args) {
-  const std::string cmd = std::string(HS_BIN) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using Result = hs::test::CommandResult;
+Result run(const std::string& args) { return hs::test::run_hemoscale(args); }
 
 fs::path write_case(const std::string& name, const std::string& text) {
   const auto dir = fs::temp_directory_path() / ("hs_cli_" + name);

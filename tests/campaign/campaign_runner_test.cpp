@@ -3,6 +3,8 @@
 // its reason, the dataset assembled, and a second invocation on the finished folder doing nothing.
 #include <gtest/gtest.h>
 
+#include "support/run_command.hpp"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -19,19 +21,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string output;
-};
-
-Result run(const std::string& args) {
-  FILE* pipe = popen((std::string(HS_BIN) + " " + args + " 2>&1").c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using Result = hs::test::CommandResult;
+Result run(const std::string& args) { return hs::test::run_hemoscale(args); }
 
 /// A 5-lattice-spacing tube: each run reaches steady state in about a hundred steps.
 fs::path make_campaign(const std::string& name, const std::string& reynolds_values) {

@@ -3,6 +3,8 @@
 // naming file and key; a good --quick run passes its Poiseuille check and writes a parseable summary.json.
 #include <gtest/gtest.h>
 
+#include "support/run_command.hpp"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -17,20 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string output;
-};
-
-Result run(const std::string& args) {
-  const std::string cmd = std::string(HS_BIN) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using Result = hs::test::CommandResult;
+Result run(const std::string& args) { return hs::test::run_hemoscale(args); }
 
 /// The shipped case file with one line replaced (`from` must occur in it) or text appended.
 fs::path write_variant(const std::string& name, const std::string& from, const std::string& to) {

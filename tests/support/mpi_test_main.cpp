@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// GoogleTest main that brackets the tests with MPI_Init/MPI_Finalize (the fluid lattice is always MPI-decomposed).
+// GoogleTest main bracketing the tests with MPI_Init/MPI_Finalize (MPI-decomposed solvers, hypre); rank 0 prints.
 #include <gtest/gtest.h>
 #include <mpi.h>
 

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Runs the hemoscale executable as a user would (tests that check exit codes and messages).
+#pragma once
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace hs::test {
+
+struct CommandResult {
+  int code;            // exit code, -1 if killed by a signal
+  std::string output;  // stdout and stderr together
+};
+
+/// `hemoscale ARGS`, with HS_BIN (the executable's path) defined by the test target.
+inline CommandResult run_hemoscale(const std::string& args) {
+  FILE* pipe = popen((std::string(HS_BIN) + " " + args + " 2>&1").c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) out += buf.data();
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+}  // namespace hs::test
