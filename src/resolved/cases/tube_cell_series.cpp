@@ -2,6 +2,7 @@
 // The sampled time series of a tube-cell run and its reduction to period averages and dimensionless groups.
 #include "resolved/cases/tube_cell_series.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -18,6 +19,22 @@ constexpr double kTransientFraction = 0.25;
 constexpr double kCellDiameterD0_m = 7.82e-6;
 
 enum Column { kDi, kCd, kCl, kInclination, kPhase };
+
+/// Viscous spin-up times R^2 / nu that a steady window must span at least.
+constexpr double kSpinUpTimes = 5.0;
+/// Jeffery period of a spheroid of aspect ratio r_e in shear: T = 2 pi (r_e + 1/r_e) / gamma_dot (Jeffery 1922);
+/// r_e = 0.37 for the RBC (thickness / diameter), so T = 19.3 / gamma_dot.
+constexpr double kJefferyPeriodTimesShearRate = 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37);
+
+/// max - min over the trailing `count` samples, relative to their mean magnitude.
+double trailing_relative_range(const std::vector<double>& v, std::size_t count) {
+  const auto begin = v.end() - static_cast<std::ptrdiff_t>(count);
+  const auto [lo, hi] = std::minmax_element(begin, v.end());
+  double mean = 0.0;
+  for (auto it = begin; it != v.end(); ++it) mean += *it;
+  mean /= static_cast<double>(count);
+  return (*hi - *lo) / std::max(std::abs(mean), 1e-300);
+}
 
 nlohmann::json average_json(const PeriodAverage& a) {
   return {{"mean", a.mean}, {"spread", a.spread}, {"periods", a.periods}, {"period_s", a.period_s}, {"steady", a.steady}};
@@ -75,11 +92,28 @@ std::vector<double> TubeCellSeries::column(int which) const {
   return out;
 }
 
+double TubeCellSeries::steady_window_s() const {
+  const double spin_up = kSpinUpTimes * config_.radius_m * config_.radius_m / config_.kinematic_viscosity_m2_s;
+  const double gamma = common::poiseuille_shear_rate(config_.u_max_m_s, config_.radial_position * config_.radius_m,
+                                                     config_.radius_m);
+  return gamma > 0.0 ? std::max(spin_up, kJefferyPeriodTimesShearRate / gamma) : spin_up;
+}
+
 bool TubeCellSeries::settled() const {
   // Cl is not used: on and near the axis it fluctuates about zero, where a relative spread is meaningless.
   const int n = config_.settle_periods;
-  return has_settled(column(kDi), config_.sample_every_s, n, kTransientFraction, config_.settle_spread) &&
-         has_settled(column(kCd), config_.sample_every_s, n, kTransientFraction, config_.settle_spread);
+  const auto di = column(kDi);
+  const auto cd = column(kCd);
+  if (has_settled(di, config_.sample_every_s, n, kTransientFraction, config_.settle_spread) &&
+      has_settled(cd, config_.sample_every_s, n, kTransientFraction, config_.settle_spread)) {
+    return true;
+  }
+  // Steady (not periodic) motion: DI and Cd constant within settle_spread over a window that spans the spin-up
+  // and one Jeffery period, so a slow tumble cannot pass for steady; the window is at most half the series.
+  const auto window = static_cast<std::size_t>(std::ceil(steady_window_s() / config_.sample_every_s));
+  if (window < 4 || 2 * window > di.size()) return false;
+  return trailing_relative_range(di, window) <= config_.settle_spread &&
+         trailing_relative_range(cd, window) <= config_.settle_spread;
 }
 
 nlohmann::json TubeCellSeries::results() const {

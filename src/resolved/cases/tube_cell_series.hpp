@@ -33,11 +33,14 @@ class TubeCellSeries {
   TubeCellSeries(const TubeCellConfig& config, double cell_volume_m3);
   void add(const TubeCellSample& sample);
   [[nodiscard]] std::vector<double> row(const TubeCellSample& sample) const;
-  /// Whether DI, Cd and Cl have settled over settle_periods whole periods (measure/periodic_signal).
+  /// Whether DI and Cd have settled over settle_periods whole periods (measure/periodic_signal), or are steady
+  /// within settle_spread over steady_window_s().
   [[nodiscard]] bool settled() const;
   /// Period averages, flow mode and dimensionless groups for summary.json "results".
   [[nodiscard]] nlohmann::json results() const;
   [[nodiscard]] std::size_t size() const { return samples_.size(); }
+  /// Trailing window over which a non-periodic (steady) run must be constant: max(5 R^2/nu, one Jeffery period).
+  [[nodiscard]] double steady_window_s() const;
 
  private:
   [[nodiscard]] double radial_m(const TubeCellSample& s) const;

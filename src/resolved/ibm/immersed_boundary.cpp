@@ -112,9 +112,9 @@ ForcingReport ImmersedBoundary::apply(const Markers& markers) {
       report.total_force_lu += df[k];
     }
     spread(markers.x_lu, df);
-    fluid = interpolate(markers.x_lu);
+    if (it + 1 < settings_.iterations || settings_.measure_slip) fluid = interpolate(markers.x_lu);
   }
-  report.slip_after_lu = max_slip(markers, fluid);
+  if (settings_.measure_slip) report.slip_after_lu = max_slip(markers, fluid);
   return report;
 }
 

@@ -15,6 +15,7 @@ namespace hs::resolved {
 struct IbmSettings {
   DeltaKernel kernel = DeltaKernel::four_point;   // Palabos-npFEM uses Peskin's phi4 (resolved-methods.md 2.1)
   int iterations = 1;                             // inamuro_iT = 1 in every shipped Palabos-npFEM case (2.2)
+  bool measure_slip = false;                      // interpolate once more after the last iteration (diagnostics)
 };
 
 /// Lagrangian markers in lattice units: global lattice coordinates (may lie outside the periodic box: node
@@ -34,7 +35,7 @@ struct MarkerFluid {
 /// What one multi-direct forcing pass did (lattice units).
 struct ForcingReport {
   double slip_before_lu = 0.0;          // max |U_k - u_k| before the first iteration
-  double slip_after_lu = 0.0;           // max |U_k - u_k| after the last iteration
+  double slip_after_lu = 0.0;           // max |U_k - u_k| after the last iteration (only with measure_slip)
   common::Vec3 total_force_lu;          // sum of the marker forces spread (= force on the fluid per step)
 };
 
