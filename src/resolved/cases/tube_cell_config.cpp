@@ -14,14 +14,12 @@ namespace {
 /// tau ~ 15 overshoots U_max by ~15 % and trips the Mach watchdog (0.1).
 constexpr double kLatticeVelocityDefault = 0.04;
 constexpr double kLatticeVelocityMax = 0.1;
-constexpr double kQuickCoarsening = 2.0;
 constexpr long kQuickSamples = 40;
 
-void read_numerics(hs::common::ConfigSection n, TubeCellConfig& c, bool quick) {
+void read_numerics(hs::common::ConfigSection n, TubeCellConfig& c) {
   if (n.has("tau")) n.fail("tau", "is derived from dx_m and lattice_velocity (tau = 1/2 + 3 nu dt / dx^2); remove it");
   if (n.has("time_step_s")) n.fail("time_step_s", "is derived (dt = lattice_velocity dx / U_max); remove it");
-  c.dx_m = n.positive("dx_m") * (quick ? kQuickCoarsening : 1.0);
-  n.derived("dx_m_used", c.dx_m);
+  c.dx_m = n.positive("dx_m");
   c.lattice_velocity = n.number_in_or("lattice_velocity", 1e-4, kLatticeVelocityMax, kLatticeVelocityDefault);
   c.collision.model = n.one_of_or("collision", {"trt", "bgk"}, "trt") == "trt" ? CollisionModel::trt : CollisionModel::bgk;
   c.collision.magic = n.greater_than_or("trt_magic", 0.0, trt_magic_default);
@@ -58,7 +56,7 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   c.radial_position = cell.number_in("radial_position", 0.0, 0.9);
   auto membrane = root.section_or_empty("membrane");
   c.membrane = parse_membrane_config(membrane);
-  read_numerics(root.section("numerics"), c, quick);
+  read_numerics(root.section("numerics"), c);
   read_run(root.section("run"), root.section_or_empty("output"), c);
   file.finish();
   c.u_max_m_s = c.reynolds * c.kinematic_viscosity_m2_s / (2.0 * c.radius_m);

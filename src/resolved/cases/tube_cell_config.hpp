@@ -46,7 +46,9 @@ struct TubeCellConfig {
   long sample_every_steps;
 };
 
-/// Reads and checks the whole case strictly. `quick` coarsens dx by 2 and caps the run at 40 samples (CI).
+/// Reads and checks the whole case strictly. `quick` caps the run at 40 samples (CI); dx is kept, because at
+/// dx = 2 um the 258-vertex mesh is denser than the lattice (mean edge ~0.35 lu) and multi-direct forcing
+/// diverges (measured: Mach watchdog after 100 steps; resolved-methods.md 8.6).
 /// Throws hs::common::ConfigError naming file and key.
 TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick);
 
