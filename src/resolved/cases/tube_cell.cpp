@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
+#include "common/io/checkpoint.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/io/vtk_image.hpp"
 #include "common/io/vtk_polydata.hpp"
@@ -130,6 +132,60 @@ void write_frames(const TubeCellRun& r, const common::RunContext& ctx, int frame
   fluid_pvd->add(t, "vtk/" + fname);
 }
 
+std::vector<double> flatten(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  std::vector<double> out;
+  for (const auto* v : {&a, &b}) {
+    for (const auto& p : *v) out.insert(out.end(), {p.x, p.y, p.z});
+  }
+  return out;
+}
+
+/// Everything needed to continue bit for bit: populations, force field, membrane, markers, samples (one file per rank).
+void write_checkpoint(TubeCellRun& r, const TubeCellSeries& series, const common::RunContext& ctx, long step, int frame) {
+  common::Checkpoint cp;
+  cp.put("populations", r.lattice->raw_populations());
+  const std::span<double> field = r.lattice->force_field();
+  cp.put("force_field", std::span<const double>(field.data(), field.size()));
+  cp.put("membrane", r.membrane->state());
+  const CouplingState st = r.cell->state();
+  cp.put("markers", flatten(st.marker_x_lu, st.marker_u_lu));
+  cp.put("series", series.pack());
+  cp.meta()["step"] = step;
+  cp.meta()["coupling_steps"] = st.steps;
+  cp.meta()["frame"] = frame;
+  cp.write(ctx.folder().checkpoint_dir(), ctx.rank());
+}
+
+/// Restores write_checkpoint(); returns the step to continue from.
+long read_checkpoint(TubeCellRun& r, TubeCellSeries& series, const common::RunContext& ctx, int& frame) {
+  const common::Checkpoint cp = common::Checkpoint::read(ctx.folder().checkpoint_dir(), ctx.rank());
+  const long step = cp.meta()["step"].get<long>();
+  r.lattice->restore_raw_populations(cp.doubles("populations"), step);
+  const auto& field = cp.doubles("force_field");
+  const std::span<double> target = r.lattice->force_field();
+  if (field.size() != target.size()) throw common::ConfigError("checkpoint: force field of another lattice");
+  std::copy(field.begin(), field.end(), target.begin());
+  r.membrane->restore_state(cp.doubles("membrane"));
+  const auto& m = cp.doubles("markers");
+  CouplingState st;
+  const std::size_t n = m.size() / 6;
+  for (std::size_t k = 0; k < 2 * n; ++k) {
+    (k < n ? st.marker_x_lu : st.marker_u_lu).push_back({m[3 * k], m[3 * k + 1], m[3 * k + 2]});
+  }
+  st.steps = cp.meta()["coupling_steps"].get<long>();
+  r.cell->restore(st);
+  series.unpack(cp.doubles("series"));
+  frame = cp.meta()["frame"].get<int>();
+  return step;
+}
+
+/// Rank 0's clock decides, so every rank writes the checkpoint of the same step.
+bool checkpoint_due(common::CheckpointSchedule& schedule, int rank) {
+  int due = rank == 0 && schedule.due() ? 1 : 0;
+  MPI_Bcast(&due, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return due != 0;
+}
+
 }  // namespace
 
 int run_tube_cell(const common::CaseRequest& request) {
@@ -144,10 +200,14 @@ int run_tube_cell(const common::CaseRequest& request) {
                  r.nodes[0], r.nodes[1], r.nodes[2], c.dx_m, c.dt_s, c.collision.tau, c.lattice_velocity,
                  c.membrane_every);
   TubeCellSeries series(c, r.membrane->rest_volume_m3());
+  int frame = 0;
+  const long first_step = ctx.resuming() ? read_checkpoint(r, series, ctx, frame) : 0;
+  if (ctx.resuming()) ctx.log().info("resumed at step {} with {} samples", first_step, series.size());
   std::unique_ptr<common::CsvWriter> csv;
   std::unique_ptr<common::PvdSeries> membrane_pvd, fluid_pvd;
   if (ctx.rank() == 0) {
     csv = std::make_unique<common::CsvWriter>(ctx.folder().file("timeseries.csv"), tube_cell_columns());
+    for (const auto& s : series.samples()) csv->row(series.row(s));   // rows up to the checkpoint (resume)
     membrane_pvd = std::make_unique<common::PvdSeries>(ctx.folder().file("membrane.pvd"));
     fluid_pvd = std::make_unique<common::PvdSeries>(ctx.folder().file("fields.pvd"));
   }
@@ -155,7 +215,7 @@ int run_tube_cell(const common::CaseRequest& request) {
   const long frame_every = c.vtk_every_s > 0.0 ? r.units.to_lattice_steps(c.vtk_every_s) : 0;
   Vec3 force_sum_lu, traction_sum_N;
   long summed = 0;
-  common::TimeLoop loop(max_steps);
+  common::TimeLoop loop(max_steps, first_step);
   loop.add("membrane_solve", [&] { r.cell->membrane_solve(); });
   loop.add("ibm_forcing", [&] { r.cell->ibm_forcing(); });
   loop.add("lbm_stream_collide", [&] { r.lattice->stream_collide(); });
@@ -167,11 +227,12 @@ int run_tube_cell(const common::CaseRequest& request) {
     traction_sum_N += r.cell->report().fluid_force_N;
     ++summed;
   });
-  int frame = 0;
   loop.every(frame_every, "write_frames", [&] { write_frames(r, ctx, frame++, membrane_pvd.get(), fluid_pvd.get()); });
   common::Progress progress("tube-cell", max_steps, ctx.show_progress() && !request.quiet);
-  bool settled = false;
-  while (!settled && loop.run_steps(c.sample_every_steps)) {
+  common::CheckpointSchedule schedule(c.checkpoint_every_wall_s);
+  bool settled = series.settled();
+  while (!settled && loop.step() < loop.end_step()) {
+    loop.run_steps(c.sample_every_steps);
     r.lattice->check_health();
     const double n = static_cast<double>(std::max(1L, summed));
     Vec3 f_N;
@@ -184,8 +245,10 @@ int run_tube_cell(const common::CaseRequest& request) {
     summed = 0;
     settled = series.settled();
     progress.update(loop.step());
+    if (checkpoint_due(schedule, ctx.rank())) write_checkpoint(r, series, ctx, loop.step(), frame);
   }
   progress.finish();
+  write_checkpoint(r, series, ctx, loop.step(), frame);
   write_frames(r, ctx, frame++, membrane_pvd.get(), fluid_pvd.get());
   ctx.log().info("{} after {} steps ({:.4g} s simulated); wall time per stage:\n{}",
                  settled ? "settled" : "stopped at max_time_s (NOT settled)", loop.step(),

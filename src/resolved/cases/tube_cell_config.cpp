@@ -62,7 +62,10 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   c.u_max_m_s = c.reynolds * c.kinematic_viscosity_m2_s / (2.0 * c.radius_m);
   c.dt_s = c.lattice_velocity * c.dx_m / c.u_max_m_s;
   c.collision.tau = 0.5 + 3.0 * c.kinematic_viscosity_m2_s * c.dt_s / (c.dx_m * c.dx_m);
-  c.sample_every_steps = std::max(1L, std::lround(c.sample_every_s / c.dt_s));
+  // Samples (and checkpoints) fall on membrane-step boundaries, where the coupling state is just positions/velocities.
+  const long k = c.membrane_every;
+  c.sample_every_steps = std::max(k, k * std::lround(c.sample_every_s / (c.dt_s * static_cast<double>(k))));
+  c.sample_every_s = static_cast<double>(c.sample_every_steps) * c.dt_s;
   if (quick) c.max_time_s = std::min(c.max_time_s, static_cast<double>(kQuickSamples * c.sample_every_steps) * c.dt_s);
   auto numerics = root.section("numerics");
   numerics.derived("time_step_s", c.dt_s);

@@ -52,6 +52,31 @@ TubeCellSeries::TubeCellSeries(const TubeCellConfig& config, double cell_volume_
 
 void TubeCellSeries::add(const TubeCellSample& sample) { samples_.push_back(sample); }
 
+namespace {
+constexpr std::size_t kPackedFields = 15;
+}  // namespace
+
+std::vector<double> TubeCellSeries::pack() const {
+  std::vector<double> out;
+  out.reserve(kPackedFields * samples_.size());
+  for (const auto& s : samples_) {
+    out.insert(out.end(), {s.time_s, s.force_N.x, s.force_N.y, s.force_N.z, s.traction_force_N.x, s.traction_force_N.y,
+                           s.traction_force_N.z, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z, s.axial_velocity_m_s,
+                           s.di, s.inclination_rad, s.marker_phase_rad, 0.0});
+  }
+  return out;
+}
+
+void TubeCellSeries::unpack(std::span<const double> flat) {
+  samples_.clear();
+  for (std::size_t k = 0; k + kPackedFields <= flat.size(); k += kPackedFields) {
+    const double* v = flat.data() + k;
+    samples_.push_back({.time_s = v[0], .force_N = {v[1], v[2], v[3]}, .traction_force_N = {v[4], v[5], v[6]},
+                        .centroid_m = {v[7], v[8], v[9]}, .axial_velocity_m_s = v[10], .di = v[11],
+                        .inclination_rad = v[12], .marker_phase_rad = v[13]});
+  }
+}
+
 double TubeCellSeries::radial_m(const TubeCellSample& s) const { return std::hypot(s.centroid_m.x, s.centroid_m.y); }
 
 double TubeCellSeries::lift_N(const TubeCellSample& s) const {

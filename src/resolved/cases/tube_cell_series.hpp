@@ -39,6 +39,10 @@ class TubeCellSeries {
   /// Period averages, flow mode and dimensionless groups for summary.json "results".
   [[nodiscard]] nlohmann::json results() const;
   [[nodiscard]] std::size_t size() const { return samples_.size(); }
+  [[nodiscard]] const std::vector<TubeCellSample>& samples() const { return samples_; }
+  /// Flat copy of the samples for checkpoints, and its inverse (replaces the series).
+  [[nodiscard]] std::vector<double> pack() const;
+  void unpack(std::span<const double> flat);
   /// Trailing window over which a non-periodic (steady) run must be constant: max(5 R^2/nu, one Jeffery period).
   [[nodiscard]] double steady_window_s() const;
 

@@ -54,7 +54,7 @@ class IbmKernels : public ::testing::TestWithParam<int> {};
 
 TEST_P(IbmKernels, SpreadingConservesTotalForceAcrossPeriodicFaces) {
   auto lattice = periodic_box(12, {});
-  ImmersedBoundary ibm(*lattice, {.kernel = delta_kernel_from_points(GetParam()), .iterations = 1});
+  ImmersedBoundary ibm(*lattice, {.kernel = delta_kernel_from_points(GetParam()), .iterations = 1, .measure_slip = false});
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> pos(-14.0, 26.0);   // markers inside, near and far outside the box
   std::uniform_real_distribution<double> val(-1.0, 1.0);
@@ -77,7 +77,7 @@ TEST_P(IbmKernels, SpreadingConservesTotalForceAcrossPeriodicFaces) {
 TEST_P(IbmKernels, InterpolatesUniformStateExactlyAndPeriodicImagesAgree) {
   const Vec3 u0{0.02, -0.01, 0.005};
   auto lattice = periodic_box(12, u0);
-  ImmersedBoundary ibm(*lattice, {.kernel = delta_kernel_from_points(GetParam()), .iterations = 1});
+  ImmersedBoundary ibm(*lattice, {.kernel = delta_kernel_from_points(GetParam()), .iterations = 1, .measure_slip = false});
   const std::vector<Vec3> x{{3.3, 4.7, 5.1}, {-0.4, 11.6, 0.2}, {11.6, -0.4, 12.2}};
   const MarkerFluid fluid = ibm.interpolate(x);
   for (std::size_t k = 0; k < x.size(); ++k) {
@@ -92,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(Points, IbmKernels, ::testing::Values(2, 3, 4));
 double slip_after(int iterations, double* before = nullptr) {
   const Vec3 u0{0.03, 0.0, 0.0};
   auto lattice = periodic_box(20, u0);
-  ImmersedBoundary ibm(*lattice, {.kernel = DeltaKernel::four_point, .iterations = iterations});
+  ImmersedBoundary ibm(*lattice, {.kernel = DeltaKernel::four_point, .iterations = iterations, .measure_slip = true});
   const ForcingReport report = ibm.apply(sphere_markers({9.6, 10.1, 9.9}, 4.0, 200));
   if (before != nullptr) *before = report.slip_before_lu;
   return report.slip_after_lu;
