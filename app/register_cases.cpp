@@ -2,6 +2,7 @@
 // The single list of case types `hemoscale run` knows: one line per case.
 #include "app/registry.hpp"
 #include "resolved/cases/stretching.hpp"
+#include "resolved/cases/tube_cell.hpp"
 #include "resolved/cases/tube_poiseuille.hpp"
 #include "unresolved/cases/tube_plasma.hpp"
 
@@ -12,6 +13,7 @@ std::map<std::string, Entry> case_types() {
   r["tube-poiseuille"] = {"plasma in a periodic tube, checked against Poiseuille", hs::resolved::run_tube_poiseuille};
   r["stretching"] = {"optical-tweezers stretching of one RBC membrane vs Mills et al. 2004", hs::resolved::run_stretching};
   r["tube-plasma"] = {"plasma alone in a periodic tube (unresolved FVM), checked against Poiseuille", hs::unresolved::run_tube_plasma};
+  r["tube-cell"] = {"one RBC in the periodic campaign tube: drag (centre fixed) or lift (axial motion only)", hs::resolved::run_tube_cell};
   return r;
 }
 

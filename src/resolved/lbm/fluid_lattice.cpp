@@ -177,6 +177,12 @@ void FluidLattice::add_force(int x, int y, int z, const common::Vec3& f_lu) {
   force_field_.at(2 * v + n) += f_lu.z;
 }
 
+void FluidLattice::restore_raw_populations(std::span<const double> f, long steps) {
+  if (f.size() != src_.size()) throw std::invalid_argument("restore_raw_populations: the checkpoint is of another lattice");
+  std::copy(f.begin(), f.end(), src_.begin());
+  steps_ = steps;
+}
+
 void FluidLattice::clear_force_field() { std::fill(force_field_.begin(), force_field_.end(), 0.0); }
 
 std::array<int, 3> FluidLattice::global_of(std::ptrdiff_t n) const {

@@ -124,6 +124,11 @@ class FluidLattice {
   /// Watchdog: throws hs::common::NumericalError naming the global node, the value and the limit on NaN,
   /// density outside [rho_min, rho_max] or Mach > mach_max at any fluid node of any rank. Collective.
   void check_health(const HealthLimits& limits = {}) const;
+  /// Checkpoints: the complete state between steps is the current population buffer (interior, ghosts and wall
+  /// slots) plus the step count. restore_raw_populations() takes what raw_populations() gave on the same lattice
+  /// (same spec and decomposition, after initialize()); throws std::invalid_argument on a size mismatch.
+  [[nodiscard]] std::span<const double> raw_populations() const { return {src_.data(), src_.size()}; }
+  void restore_raw_populations(std::span<const double> f, long steps);
   /// Number of boundary links (diagnostics).
   [[nodiscard]] std::size_t wall_link_count() const { return links_.size(); }
 

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
@@ -239,5 +240,32 @@ double NpfemSolver::volume_m3() const {
 double NpfemSolver::rest_area_m2() const { return energy_->rest_area() * 1e-12; }
 double NpfemSolver::rest_volume_m3() const { return energy_->rest_volume() * 1e-18; }
 double NpfemSolver::vertex_mass_kg() const { return mass_fg_ * 1e-18; }
+
+}  // namespace hs::resolved
+
+namespace hs::resolved {
+
+std::vector<double> NpfemSolver::state() const {
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(9 * x_um_.rows() + 3));
+  for (const Positions* p : {&x_um_, &v_um_us_, &f_ext_pN_}) {
+    for (Eigen::Index i = 0; i < p->rows(); ++i)
+      for (int a = 0; a < 3; ++a) out.push_back((*p)(i, a));
+  }
+  for (int a = 0; a < 3; ++a) out.push_back(center_target_um_[a]);
+  return out;
+}
+
+void NpfemSolver::restore_state(std::span<const double> state) {
+  const auto n = static_cast<std::size_t>(x_um_.rows());
+  if (state.size() != 9 * n + 3) throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh");
+  std::size_t k = 0;
+  for (Positions* p : {&x_um_, &v_um_us_, &f_ext_pN_}) {
+    p->resize(static_cast<Eigen::Index>(n), 3);
+    for (Eigen::Index i = 0; i < p->rows(); ++i)
+      for (int a = 0; a < 3; ++a) (*p)(i, a) = state[k++];
+  }
+  for (int a = 0; a < 3; ++a) center_target_um_[a] = state[k++];
+}
 
 }  // namespace hs::resolved

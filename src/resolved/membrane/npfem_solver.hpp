@@ -65,6 +65,11 @@ class NpfemSolver {
   /// Moves the whole cell rigidly (placing it in a domain).
   void translate_m(const hs::common::Vec3& shift_m);
 
+  /// Checkpoint state (flat): positions, velocities and external forces of every vertex, and the centre target.
+  [[nodiscard]] std::vector<double> state() const;
+  /// Restores state() of a solver built from the same mesh and settings; throws std::invalid_argument on a size mismatch.
+  void restore_state(std::span<const double> state);
+
   [[nodiscard]] int vertex_count() const { return static_cast<int>(x_um_.rows()); }
   [[nodiscard]] const std::vector<std::array<int, 3>>& triangles() const { return energy_->triangles(); }
   [[nodiscard]] std::vector<hs::common::Vec3> positions_m() const;

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// The typed input of the tube-cell case (one RBC in the periodic campaign tube), with its derived lattice values.
+#pragma once
+
+#include "common/config/config_file.hpp"
+#include "resolved/ibm/coupled_cell.hpp"
+#include "resolved/lbm/boundary_links.hpp"
+#include "resolved/lbm/collision_params.hpp"
+#include "resolved/membrane/membrane_parameters.hpp"
+
+namespace hs::resolved {
+
+enum class TubeCellSetup { drag, lift };
+
+struct TubeCellConfig {
+  // [geometry]
+  double radius_m;
+  double length_m;
+  // [fluid]
+  double density_kg_m3;
+  double kinematic_viscosity_m2_s;
+  // [flow]
+  double reynolds;                  // Re = rho D U_max / mu, D = 2 R (seed paper section 4)
+  // [cell]
+  TubeCellSetup setup;
+  double radial_position;           // r* = r / R of the centre of mass
+  MembraneConfig membrane;          // [membrane]
+  // [numerics]
+  double dx_m;
+  double lattice_velocity;          // U_max in lattice units: fixes dt (and so tau)
+  CollisionParams collision;        // tau derived
+  WallRule wall;
+  int membrane_every;
+  IbmSettings ibm;
+  // [run]
+  double max_time_s;                // cap on simulated time
+  double sample_every_s;            // time-series sampling
+  int settle_periods;               // whole periods that must agree before stopping (and are averaged)
+  double settle_spread;             // relative spread of the per-period means that counts as settled
+  double checkpoint_every_wall_s;
+  // [output]
+  double vtk_every_s;               // 0: only the final frame
+  // derived
+  double u_max_m_s;
+  double dt_s;
+  long sample_every_steps;
+};
+
+/// Reads and checks the whole case strictly. `quick` caps the run at 40 samples (CI); dx is kept, because at
+/// dx = 2 um the 258-vertex mesh is denser than the lattice (mean edge ~0.35 lu) and multi-direct forcing
+/// diverges (measured: Mach watchdog after 100 steps; resolved-methods.md 8.6).
+/// Throws hs::common::ConfigError naming file and key.
+TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick);
+
+}  // namespace hs::resolved

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: MIT
+// The sampled time series of a tube-cell run and its reduction to period averages and dimensionless groups.
+#include "resolved/cases/tube_cell_series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "common/dimensionless_groups.hpp"
+#include "resolved/measure/flow_mode.hpp"
+#include "resolved/measure/periodic_signal.hpp"
+
+namespace hs::resolved {
+namespace {
+
+/// Share of the series discarded as start-up transient before settling is judged.
+constexpr double kTransientFraction = 0.25;
+/// RBC reference diameter D0 (seed paper section 3.2, Evans-Fung shape); Ca uses a = D0 / 2 (docs/coefficients.md).
+constexpr double kCellDiameterD0_m = 7.82e-6;
+
+enum Column { kDi, kCd, kCl, kInclination, kPhase };
+
+/// Viscous spin-up times R^2 / nu that a steady window must span at least.
+constexpr double kSpinUpTimes = 5.0;
+/// Jeffery period of a spheroid of aspect ratio r_e in shear: T = 2 pi (r_e + 1/r_e) / gamma_dot (Jeffery 1922);
+/// r_e = 0.37 for the RBC (thickness / diameter), so T = 19.3 / gamma_dot.
+constexpr double kJefferyPeriodTimesShearRate = 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37);
+
+/// max - min over the trailing `count` samples, relative to their mean magnitude.
+double trailing_relative_range(const std::vector<double>& v, std::size_t count) {
+  const auto begin = v.end() - static_cast<std::ptrdiff_t>(count);
+  const auto [lo, hi] = std::minmax_element(begin, v.end());
+  double mean = 0.0;
+  for (auto it = begin; it != v.end(); ++it) mean += *it;
+  mean /= static_cast<double>(count);
+  return (*hi - *lo) / std::max(std::abs(mean), 1e-300);
+}
+
+nlohmann::json average_json(const PeriodAverage& a) {
+  return {{"mean", a.mean}, {"spread", a.spread}, {"periods", a.periods}, {"period_s", a.period_s}, {"steady", a.steady}};
+}
+
+}  // namespace
+
+std::vector<std::string> tube_cell_columns() {
+  return {"time_s", "drag_N", "lift_N", "cd", "cl", "di", "inclination_rad", "centroid_x_m", "centroid_y_m",
+          "centroid_z_m", "r_star", "axial_velocity_m_s", "traction_drag_N", "traction_lift_N"};
+}
+
+TubeCellSeries::TubeCellSeries(const TubeCellConfig& config, double cell_volume_m3)
+    : config_(config), particle_diameter_m_(std::cbrt(6.0 * cell_volume_m3 / std::numbers::pi)) {}
+
+void TubeCellSeries::add(const TubeCellSample& sample) { samples_.push_back(sample); }
+
+namespace {
+constexpr std::size_t kPackedFields = 15;
+}  // namespace
+
+std::vector<double> TubeCellSeries::pack() const {
+  std::vector<double> out;
+  out.reserve(kPackedFields * samples_.size());
+  for (const auto& s : samples_) {
+    out.insert(out.end(), {s.time_s, s.force_N.x, s.force_N.y, s.force_N.z, s.traction_force_N.x, s.traction_force_N.y,
+                           s.traction_force_N.z, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z, s.axial_velocity_m_s,
+                           s.di, s.inclination_rad, s.marker_phase_rad, 0.0});
+  }
+  return out;
+}
+
+void TubeCellSeries::unpack(std::span<const double> flat) {
+  samples_.clear();
+  for (std::size_t k = 0; k + kPackedFields <= flat.size(); k += kPackedFields) {
+    const double* v = flat.data() + k;
+    samples_.push_back({.time_s = v[0], .force_N = {v[1], v[2], v[3]}, .traction_force_N = {v[4], v[5], v[6]},
+                        .centroid_m = {v[7], v[8], v[9]}, .axial_velocity_m_s = v[10], .di = v[11],
+                        .inclination_rad = v[12], .marker_phase_rad = v[13]});
+  }
+}
+
+double TubeCellSeries::radial_m(const TubeCellSample& s) const { return std::hypot(s.centroid_m.x, s.centroid_m.y); }
+
+double TubeCellSeries::lift_N(const TubeCellSample& s) const {
+  const double r = radial_m(s);
+  if (r < 1e-12) return s.force_N.x;   // on the axis: the x direction (the direction the cell was displaced in)
+  return (s.force_N.x * s.centroid_m.x + s.force_N.y * s.centroid_m.y) / r;
+}
+
+double TubeCellSeries::relative_speed_m_s(const TubeCellSample& s) const {
+  return common::poiseuille_velocity(config_.u_max_m_s, radial_m(s), config_.radius_m) - s.axial_velocity_m_s;
+}
+
+std::vector<double> TubeCellSeries::row(const TubeCellSample& s) const {
+  const double u = relative_speed_m_s(s);
+  const double rho = config_.density_kg_m3;
+  const double r = radial_m(s);
+  const double traction_lift = r < 1e-12 ? s.traction_force_N.x
+                                         : (s.traction_force_N.x * s.centroid_m.x + s.traction_force_N.y * s.centroid_m.y) / r;
+  return {s.time_s, drag_N(s), lift_N(s), common::force_coefficient(drag_N(s), rho, u, particle_diameter_m_),
+          common::force_coefficient(lift_N(s), rho, u, particle_diameter_m_), s.di, s.inclination_rad,
+          s.centroid_m.x, s.centroid_m.y, s.centroid_m.z, r / config_.radius_m, s.axial_velocity_m_s,
+          s.traction_force_N.z, traction_lift};
+}
+
+std::vector<double> TubeCellSeries::column(int which) const {
+  std::vector<double> out;
+  out.reserve(samples_.size());
+  for (const auto& s : samples_) {
+    const auto r = row(s);
+    switch (which) {
+      case kDi: out.push_back(s.di); break;
+      case kCd: out.push_back(r[3]); break;
+      case kCl: out.push_back(r[4]); break;
+      case kInclination: out.push_back(s.inclination_rad); break;
+      default: out.push_back(s.marker_phase_rad); break;
+    }
+  }
+  return out;
+}
+
+double TubeCellSeries::steady_window_s() const {
+  const double spin_up = kSpinUpTimes * config_.radius_m * config_.radius_m / config_.kinematic_viscosity_m2_s;
+  const double gamma = common::poiseuille_shear_rate(config_.u_max_m_s, config_.radial_position * config_.radius_m,
+                                                     config_.radius_m);
+  return gamma > 0.0 ? std::max(spin_up, kJefferyPeriodTimesShearRate / gamma) : spin_up;
+}
+
+bool TubeCellSeries::settled() const {
+  // Cl is not used: on and near the axis it fluctuates about zero, where a relative spread is meaningless.
+  const int n = config_.settle_periods;
+  const auto di = column(kDi);
+  const auto cd = column(kCd);
+  if (has_settled(di, config_.sample_every_s, n, kTransientFraction, config_.settle_spread) &&
+      has_settled(cd, config_.sample_every_s, n, kTransientFraction, config_.settle_spread)) {
+    return true;
+  }
+  // Steady (not periodic) motion: DI and Cd constant within settle_spread over a window that spans the spin-up
+  // and one Jeffery period, so a slow tumble cannot pass for steady; the window is at most half the series.
+  const auto window = static_cast<std::size_t>(std::ceil(steady_window_s() / config_.sample_every_s));
+  if (window < 4 || 2 * window > di.size()) return false;
+  return trailing_relative_range(di, window) <= config_.settle_spread &&
+         trailing_relative_range(cd, window) <= config_.settle_spread;
+}
+
+nlohmann::json TubeCellSeries::results() const {
+  nlohmann::json r;
+  if (samples_.empty()) return r;
+  const double dt = config_.sample_every_s;
+  const auto di = column(kDi);
+  const auto cd = column(kCd);
+  const auto cl = column(kCl);
+  PeriodEstimate period = detect_period(di, dt);
+  if (!period.periodic && !period.steady) period = detect_period(cd, dt);
+  const auto a_di = average_over_periods(di, dt, period, config_.settle_periods);
+  const auto a_cd = average_over_periods(cd, dt, period, config_.settle_periods);
+  const auto a_cl = average_over_periods(cl, dt, period, config_.settle_periods);
+  const auto inclination = column(kInclination);
+  const auto phase = column(kPhase);
+  // Undisturbed flow and groups at the mean (last-sample) position of the centre of mass.
+  const TubeCellSample& last = samples_.back();
+  const double r_m = radial_m(last);
+  const double nu = config_.kinematic_viscosity_m2_s;
+  const double mu = nu * config_.density_kg_m3;
+  const double gamma = common::poiseuille_shear_rate(config_.u_max_m_s, r_m, config_.radius_m);
+  const double u_fluid = common::poiseuille_velocity(config_.u_max_m_s, r_m, config_.radius_m);
+  const double u_mean = 0.5 * config_.u_max_m_s;
+  r["di_mean"] = a_di.mean;
+  r["di_spread"] = a_di.spread;
+  r["cd_mean"] = a_cd.mean;
+  r["cd_spread"] = a_cd.spread;
+  r["cl_mean"] = a_cl.mean;
+  r["cl_spread"] = a_cl.spread;
+  r["periods_averaged"] = a_di.periods;
+  r["period_s"] = period.period_s;
+  r["periodic"] = period.periodic;
+  r["steady"] = period.steady;
+  r["flow_mode"] = to_string(classify_flow_mode(inclination, phase));
+  r["averages"] = {{"di", average_json(a_di)}, {"cd", average_json(a_cd)}, {"cl", average_json(a_cl)}};
+  r["reynolds"] = common::channel_reynolds(config_.density_kg_m3, 2.0 * config_.radius_m, config_.u_max_m_s, mu);
+  r["r_star"] = r_m / config_.radius_m;
+  r["r_star_nominal"] = config_.radial_position;
+  r["gamma_plus"] = common::shear_rate_plus(gamma, config_.radius_m, nu);
+  r["u_r_plus"] = common::slip_velocity_plus(last.axial_velocity_m_s, u_fluid, u_mean);
+  r["re_p"] = common::particle_reynolds(particle_diameter_m_, last.axial_velocity_m_s - u_fluid, nu);
+  r["ca"] = common::capillary_number(mu, gamma, 0.5 * kCellDiameterD0_m, config_.membrane.material.shear_modulus_N_m);
+  r["particle_diameter_m"] = particle_diameter_m_;
+  r["shear_rate_1_s"] = gamma;
+  r["undisturbed_velocity_m_s"] = u_fluid;
+  r["u_max_m_s"] = config_.u_max_m_s;
+  r["samples"] = samples_.size();
+  return r;
+}
+
+}  // namespace hs::resolved

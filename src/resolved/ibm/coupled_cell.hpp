@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// One membrane immersed in the lattice fluid: the coupled time step of Palabos-npFEM (resolved-methods.md 2.3).
+#pragma once
+
+#include <vector>
+
+#include "common/units/unit_converter.hpp"
+#include "common/vec3.hpp"
+#include "resolved/ibm/fluid_traction.hpp"
+#include "resolved/ibm/immersed_boundary.hpp"
+#include "resolved/membrane/npfem_solver.hpp"
+
+namespace hs::resolved {
+
+struct CouplingSettings {
+  IbmSettings ibm;
+  int membrane_every = 2;          // lattice steps per membrane step, h = k dt (Palabos timestep_ShapeOp = 2)
+  bool median_filter = true;       // Palabos-npFEM FILTERING is on (resolved-methods.md 1.4 step 6)
+  common::Vec3 lattice_origin_m;   // SI position of global lattice node (0, 0, 0)
+};
+
+/// Diagnostics of the last coupled step.
+struct CouplingReport {
+  ForcingReport forcing;
+  common::Vec3 fluid_force_N;      // sum of the external forces given to the membrane at its last step
+  double marker_drift_lu = 0.0;    // max |marker - npFEM vertex| before the snap at the end of an interval
+  int vertices_without_fluid = 0;
+};
+
+/// The state the coupling adds to the fluid and membrane (for checkpoints).
+struct CouplingState {
+  std::vector<common::Vec3> marker_x_lu;
+  std::vector<common::Vec3> marker_u_lu;
+  long steps = 0;
+};
+
+/// Runs the coupled step as named stages (STYLE R8), every lattice step:
+///  1. membrane_solve (every k-th step): external force from the fluid stress at time t (fluid_traction,
+///     converted to newtons), one npFEM step of length h = k dt; markers are not moved yet.
+///  2. ibm_forcing: multi-direct forcing with the markers' (X, U) at time t.
+///  3. lbm_step: collide, stream, halos, boundaries.
+///  4. markers_advect: after a membrane step the markers take the new npFEM velocity; X += U every step, and at
+///     the end of each interval X is set to the npFEM positions (which x^{n+1} = x^n + h v^{n+1} makes a no-op
+///     up to round-off and the centre constraint).
+/// The solver's time step must equal k dt. Every rank holds the whole membrane (deterministic, replicated).
+class CoupledCell {
+ public:
+  CoupledCell(FluidLattice& lattice, NpfemSolver& membrane, const common::UnitConverter& units,
+              const CouplingSettings& settings);
+
+  void membrane_solve();
+  void ibm_forcing();
+  void lbm_step();
+  void markers_advect();
+  /// All four stages (tests; the cases add the stages to a TimeLoop to time them).
+  void step();
+
+  [[nodiscard]] const CouplingReport& report() const { return report_; }
+  [[nodiscard]] long steps() const { return steps_; }
+  /// Marker positions in SI (unwrapped).
+  [[nodiscard]] std::vector<common::Vec3> marker_positions_m() const;
+  [[nodiscard]] CouplingState state() const { return {markers_.x_lu, markers_.u_lu, steps_}; }
+  void restore(const CouplingState& state);
+
+ private:
+  [[nodiscard]] std::vector<common::Vec3> membrane_positions_lu() const;
+  [[nodiscard]] bool interval_starts() const { return steps_ % settings_.membrane_every == 0; }
+
+  FluidLattice& lattice_;
+  NpfemSolver& membrane_;
+  const common::UnitConverter& units_;
+  CouplingSettings settings_;
+  ImmersedBoundary ibm_;
+  std::vector<std::vector<int>> ring_;
+  Markers markers_;
+  std::vector<common::Vec3> next_u_lu_;   // npFEM velocity of the current interval, copied after the LB step
+  CouplingReport report_;
+  long steps_ = 0;
+};
+
+}  // namespace hs::resolved

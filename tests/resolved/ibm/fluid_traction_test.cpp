@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Membrane traction from the fluid stress: exact viscous traction in Couette flow (small and large tau), mean
+// pressure removal, and the 1-ring median filter.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include "../lbm/lbm_test_helpers.hpp"
+#include "resolved/ibm/fluid_traction.hpp"
+
+namespace hs::resolved {
+namespace {
+
+using common::Vec3;
+
+class CouetteTraction : public ::testing::TestWithParam<double> {};
+
+TEST_P(CouetteTraction, ViscousTractionMatchesMuTimesShearRate) {
+  const int height = 16;   // half-way walls at y = -1/2 and y = 15.5: gap H = 16
+  const double u_wall = 0.02;
+  const CollisionParams collision{.model = CollisionModel::trt, .tau = GetParam()};
+  auto lattice = test::make_channel(height, collision, MPI_COMM_WORLD);
+  lattice->set_face_wall_velocity(1, 1, {u_wall, 0.0, 0.0});
+  lattice->initialize();
+  test::run_to_steady_state(*lattice, 1e-13, 200, 200000);
+  ImmersedBoundary ibm(*lattice, {});
+  // Two membrane patches facing up (fluid above is faster: dragged forward) and down (dragged back).
+  const std::vector<Vec3> x{{0.4, 7.3, 1.2}, {1.1, 8.6, 0.7}};
+  const std::vector<Vec3> n{{0.0, 1.0, 0.0}, {0.0, -1.0, 0.0}};
+  const std::vector<double> area{1.3, 0.7};
+  const TractionResult t = fluid_traction(ibm, *lattice, {x, n, area}, {});
+  const double tau_xy = collision.viscosity_lu() * u_wall / height;   // mu gamma, rho = 1
+  // Couette flow is exact on the lattice with half-way bounce-back and TRT; 1e-9 covers the steady-state residual.
+  EXPECT_NEAR(t.force_lu[0].x, area[0] * tau_xy, 1e-9 * tau_xy);
+  EXPECT_NEAR(t.force_lu[1].x, -area[1] * tau_xy, 1e-9 * tau_xy);
+  for (int v = 0; v < 2; ++v) {
+    EXPECT_NEAR(t.force_lu[static_cast<std::size_t>(v)].y, 0.0, 1e-9 * tau_xy);   // uniform pressure, mean removed
+    EXPECT_NEAR(t.force_lu[static_cast<std::size_t>(v)].z, 0.0, 1e-12);
+  }
+  EXPECT_EQ(t.vertices_without_fluid, 0);
+  EXPECT_NEAR(t.mean_pressure_lu, 1.0 / 3.0, 1e-6);   // rho stays 1 up to O(Ma^2) in Couette flow
+}
+
+INSTANTIATE_TEST_SUITE_P(Tau, CouetteTraction, ::testing::Values(0.8, 20.0));
+
+TEST(MedianFilter, RemovesASpikeAndKeepsAUniformField) {
+  // Octahedron: every vertex has 4 neighbours.
+  const std::vector<std::array<int, 3>> tri{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                            {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  const auto ring = one_ring(6, tri);
+  ASSERT_EQ(ring[4].size(), 4u);
+  std::vector<Vec3> f(6, Vec3{1.0, -2.0, 0.5});
+  f[4] = {100.0, 50.0, -80.0};
+  const auto g = median_filter(f, ring);
+  for (const auto& v : g) {
+    EXPECT_DOUBLE_EQ(v.x, 1.0);
+    EXPECT_DOUBLE_EQ(v.y, -2.0);
+    EXPECT_DOUBLE_EQ(v.z, 0.5);
+  }
+}
+
+}  // namespace
+}  // namespace hs::resolved
