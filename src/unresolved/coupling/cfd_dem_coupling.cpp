@@ -131,7 +131,7 @@ void CfdDemCoupling::fill_fields() {
     BlockField<double>& rate = fluid_.void_fraction_rate_1_s();
     for (std::size_t c = 0; c < eps.data().size(); ++c) {
       // No rate on the first coupling step: eps_old is not a state of this run (methods note sec. 8, item 6).
-      rate[c] = steps_ == 0 ? 0.0 : (eps[c] - eps_old_[c]) / (dt * settings_.refresh_every);
+      rate[c] = steps_ == 0 || !settings_.void_fraction_rate ? 0.0 : (eps[c] - eps_old_[c]) / (dt * settings_.refresh_every);
     }
     eps_old_ = eps;
   }
