@@ -158,7 +158,8 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   FvmSolver fluid(tube.grid, c.fluid, {.dt_s = c.dt_s}, drive_of(c));
   const double q_plasma = plasma_flow_rate(c, tube.grid);
   const double u_plasma = q_plasma / (std::numbers::pi * r_tube * r_tube);
-  for (const Vec3& x : inserted.positions_m) dem.add_particle(x, {0.0, 0.0, 2.0 * u_plasma * (1.0 - (x.x * x.x + x.y * x.y) / (r_tube * r_tube))});
+  // Fluid and cells start at rest: the slip stays in the closures' range (u_r+ < 0) while the flow develops.
+  for (const Vec3& x : inserted.positions_m) dem.add_particle(x);
   CfdDemCoupling coupling(fluid, dem,
                           {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0}, .tube_radius_m = r_tube},
                           make_closures(c));

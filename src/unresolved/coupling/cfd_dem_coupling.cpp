@@ -99,11 +99,18 @@ void CfdDemCoupling::particle_forces() {
     const Vec3 uf = fluid_.velocity_at(x);
     const auto grad = fluid_.velocity_gradient_at(x);
     hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)]);
-    if (closures_.deformation) in.di = closures_.deformation->deformation_index(in);
+    // DI = (L - B)/(L + B) lies in [0, 1) by definition; a learned DI evaluated outside its training range can
+    // leave it (e.g. u_r+ > 0 in a transient), and a negative DI then fed back into C_d(DI) runs away.
+    if (closures_.deformation) in.di = std::clamp(closures_.deformation->deformation_index(in), 0.0, 0.999);
     di[i] = in.di;
     const double d = 2.0 * p.radius_m()[i];
     const double vp = std::numbers::pi / 6.0 * d * d * d;
     beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in);
+    if (!(beta[i] >= 0.0) || !std::isfinite(beta[i])) {
+      throw hs::common::NumericalError(fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
+                                                   "gamma+ = {:.4g}, u_r+ = {:.4g}): a drag coefficient must be finite and >= 0",
+                                                   beta[i], in.re_p, in.di, in.gamma_plus, in.u_r_plus));
+    }
     Vec3 f{};
     if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
     if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
