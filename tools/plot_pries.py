@@ -12,12 +12,14 @@ import matplotlib.pyplot as plt
 def main(csv_path, png_path):
     rows = list(csv.DictReader(open(csv_path)))
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    for ht in sorted({r["tube_hematocrit"] for r in rows}, key=float):
-        sel = sorted((r for r in rows if r["tube_hematocrit"] == ht), key=lambda r: float(r["diameter_um"]))
+    for ht in sorted({r["tube_hematocrit_requested"] for r in rows}, key=float):
+        sel = sorted((r for r in rows if r["tube_hematocrit_requested"] == ht), key=lambda r: float(r["diameter_um"]))
         d = [float(r["diameter_um"]) for r in sel]
         h = float(ht)
-        line = axes[0].plot(d, [float(r["discharge_hematocrit"]) / h for r in sel], "o-", label=f"CFD-DEM Ht_c={h:.2f}")[0]
-        axes[0].plot(d, [float(r["pries_discharge_hematocrit"]) / h for r in sel], "s--", color=line.get_color(),
+        achieved = [float(r["tube_hematocrit"]) for r in sel]
+        line = axes[0].plot(d, [float(r["discharge_hematocrit"]) / a for r, a in zip(sel, achieved)], "o-",
+                            label=f"CFD-DEM Ht_c={h:.2f}")[0]
+        axes[0].plot(d, [float(r["pries_discharge_hematocrit"]) / a for r, a in zip(sel, achieved)], "s--", color=line.get_color(),
                      mfc="none", label=f"Pries 1992 Ht_c={h:.2f}")
         axes[1].plot(d, [float(r["relative_apparent_viscosity"]) for r in sel], "o-", color=line.get_color())
         axes[1].plot(d, [float(r["pries_relative_apparent_viscosity"]) for r in sel], "s--", color=line.get_color(), mfc="none")

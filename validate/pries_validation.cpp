@@ -84,7 +84,7 @@ fs::path output_dir(const hs::common::TaskOptions& options) {
 int validate_pries(const hs::common::TaskOptions& options) {
   const fs::path dir = output_dir(options);
   const fs::path csv_path = dir / "pries_validation.csv";
-  std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
+  std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
                                        "mu_rel_error_pct", "rbc_count", "steady"});
   nlohmann::json result = {{"validation", "pries"},
@@ -100,7 +100,7 @@ int validate_pries(const hs::common::TaskOptions& options) {
       max_error = std::max(max_error, err);
       fmt::print("pries: D = {:5.1f} um Ht_c = {:.2f}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
                  d_um, ht, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
-      csv->row({d_um, r.summary["tube_hematocrit"].get<double>(), r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries,
+      csv->row({d_um, ht, r.summary["tube_hematocrit"].get<double>(), r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries,
                r.mu_rel_error_pct, r.summary["rbc_count"].get<double>(), r.summary["steady"].get<bool>() ? 1.0 : 0.0});
       nlohmann::json row = r.summary;
       row["n_coupling"] = c.n_coupling;

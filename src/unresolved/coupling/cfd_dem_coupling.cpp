@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "common/dimensionless_groups.hpp"
 #include "common/errors.hpp"
 
 namespace hs::unresolved {
@@ -74,10 +75,12 @@ hs::closures::ClosureInputs CfdDemCoupling::inputs(std::size_t i, const Vec3& uf
   const Vec3 slip = particle_velocity(p, i) - uf;
   const double gd = shear_rate(grad);
   hs::closures::ClosureInputs in;
-  in.re_p = d * norm(slip) / nu;
-  in.re_shear = gd * d * d / nu;
-  in.gamma_plus = gd * settings_.tube_radius_m * settings_.tube_radius_m / nu;
-  in.u_r_plus = mean_velocity_m_s_ > 0.0 ? slip[settings_.axis] / mean_velocity_m_s_ : 0.0;
+  in.re_p = hs::common::particle_reynolds(d, norm(slip), nu);
+  in.re_shear = gd * d * d / nu;   // Saffman/Mei shear Reynolds number (closure_inputs.hpp)
+  in.gamma_plus = hs::common::shear_rate_plus(gd, settings_.tube_radius_m, nu);
+  in.u_r_plus = mean_velocity_m_s_ > 0.0
+                    ? hs::common::slip_velocity_plus(particle_velocity(p, i)[settings_.axis], uf[settings_.axis], mean_velocity_m_s_)
+                    : 0.0;
   in.hematocrit = local_ht;
   return in;
 }
