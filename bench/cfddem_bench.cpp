@@ -69,7 +69,8 @@ Measured measure(long n_rbc, int repetitions) {
   FvmSolver fluid(grid, plasma, {.dt_s = dt}, {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = gradient});
   CouplingClosures closures;
   closures.drag = hs::closures::make_drag_closure({.model = "schiller_naumann", .file = {}});
-  CfdDemCoupling coupling(fluid, dem, {.n_coupling = n_coupling, .tube_radius_m = r}, std::move(closures));
+  CfdDemCoupling coupling(fluid, dem, {.n_coupling = n_coupling, .void_fraction_rate = false, .tube_radius_m = r},
+                          std::move(closures));   // as the tube-pries case (see CouplingSettings)
   coupling.set_mean_velocity_m_s(1e-3);
   coupling.step();   // warm-up: list build, AMG set-up
   std::vector<double> times;
