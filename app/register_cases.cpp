@@ -5,6 +5,7 @@
 #include "resolved/cases/tube_cell.hpp"
 #include "resolved/cases/tube_poiseuille.hpp"
 #include "unresolved/cases/tube_plasma.hpp"
+#include "unresolved/cases/tube_pries.hpp"
 
 namespace hs::app {
 
@@ -14,6 +15,7 @@ std::map<std::string, Entry> case_types() {
   r["stretching"] = {"optical-tweezers stretching of one RBC membrane vs Mills et al. 2004", hs::resolved::run_stretching};
   r["tube-plasma"] = {"plasma alone in a periodic tube (unresolved FVM), checked against Poiseuille", hs::unresolved::run_tube_plasma};
   r["tube-cell"] = {"one RBC in the periodic campaign tube: drag (centre fixed) or lift (axial motion only)", hs::resolved::run_tube_cell};
+  r["tube-pries"] = {"RBC spheres in plasma in a periodic tube (CFD-DEM): Ht_d and mu_rel vs Pries 1992", hs::unresolved::run_tube_pries};
   return r;
 }
 

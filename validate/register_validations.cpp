@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The single list of validations `hemoscale validate NAME` runs: one line per validation.
 #include "app/registry.hpp"
+#include "validate/pries_validation.hpp"
 #include "validate/stretching_validation.hpp"
 
 
@@ -9,6 +10,7 @@ namespace hs::app {
 std::map<std::string, TaskEntry> validations() {
   std::map<std::string, TaskEntry> r;
   r["stretching"] = {"RBC optical-tweezers stretching vs Mills et al. 2004 (13 forces, 258 + 642 vertices)", hs::resolved::validate_stretching};
+  r["pries"] = {"Fahraeus-Lindqvist tube table (CFD-DEM) vs Pries et al. 1992; --closures NAME|FILE|DIR", hs::unresolved::validate_pries};
   return r;
 }
 

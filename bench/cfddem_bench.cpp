@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale bench cfddem`: RBC spheres at Ht 0.10 in a periodic 100 um tube whose length holds N cells; median
+// wall time of a coupled CFD step (n_coupling DEM steps + coupling + PISO) and the process's peak RSS.
+#include "bench/cfddem_bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "closures/register_builtin.hpp"
+#include "common/geometry/tube.hpp"
+#include "common/run_folder.hpp"
+#include "unresolved/coupling/cfd_dem_coupling.hpp"
+#include "unresolved/dem/hertz_contact_law.hpp"
+#include "unresolved/dem/insertion.hpp"
+
+namespace hs::bench {
+namespace {
+
+using namespace hs::unresolved;
+
+/// Peak resident set size of this process (VmHWM of /proc/self/status), GiB.
+double peak_rss_gib() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / (1024.0 * 1024.0);   // kB -> GiB
+  }
+  return 0.0;
+}
+
+struct Measured {
+  double s_per_cfd_step;
+  double peak_rss_gib;
+  int n_coupling;
+  long cells;
+};
+
+Measured measure(long n_rbc, int repetitions) {
+  const double d_tube = 100e-6;
+  const double r = 0.5 * d_tube;
+  const double dx = d_tube / 10.0;   // the validation's 10 cells across the diameter
+  const double ht = 0.10;
+  const double length = dx * std::ceil(static_cast<double>(n_rbc) * rbc_volume_m3 / (ht * std::numbers::pi * r * r) / dx);
+  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
+  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = dx, .sides = {}};
+  spec.sides[4].type = SideType::periodic;
+  spec.sides[5].type = SideType::periodic;
+  const FvmGrid grid(tube, spec);
+  const FluidProperties plasma{.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6};
+  const double gradient = -8.0 * 1.23e-3 * 1e-3 / (r * r);   // plasma mean velocity 1 mm/s
+  const double dt = 2e-4;
+  ParticleParams params = default_particle_params();
+  params.particle.youngs_modulus_Pa = 1e3;   // as the tube-pries case
+  params.wall.youngs_modulus_Pa = 1e3;
+  const double limit = 0.1 * std::min(rayleigh_time_s(params), hertz_time_s(params, params.max_impact_velocity_m_s));
+  const int n_coupling = static_cast<int>(std::ceil(dt / (0.9 * limit)));
+  const Domain domain{.box = {{-r, -r, 0.0}, {r, r, length}}, .periodic = {false, false, true}};
+  const InsertionResult ins = insert_at_volume_fraction(tube, domain, {.volume_fraction = ht, .radius_m = params.radius_m(), .seed = 1});
+  DemSystem dem({.params = params, .domain = domain, .time_step_s = dt / n_coupling}, &tube);
+  for (const auto& x : ins.positions_m) dem.add_particle(x);
+  FvmSolver fluid(grid, plasma, {.dt_s = dt}, {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = gradient});
+  CouplingClosures closures;
+  closures.drag = hs::closures::make_drag_closure({.model = "schiller_naumann", .file = {}});
+  CfdDemCoupling coupling(fluid, dem, {.n_coupling = n_coupling, .void_fraction_rate = false, .tube_radius_m = r},
+                          std::move(closures));   // as the tube-pries case (see CouplingSettings)
+  coupling.set_mean_velocity_m_s(1e-3);
+  coupling.step();   // warm-up: list build, AMG set-up
+  std::vector<double> times;
+  for (int k = 0; k < repetitions; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    coupling.step();
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(times.begin(), times.end());
+  return {times[times.size() / 2], peak_rss_gib(), n_coupling, grid.cell_count()};
+}
+
+}  // namespace
+
+int run_cfddem_bench(const hs::common::TaskOptions& options) {
+  const std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
+  nlohmann::json j;
+  fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s\n");
+  for (const long n : sizes) {
+    const Measured m = measure(n, 3);
+    fmt::print("  {:>8} RBCs: {:.3f} s per CFD step (median of 3, n_coupling = {}, {} cells), peak RSS {:.2f} GiB\n", n,
+               m.s_per_cfd_step, m.n_coupling, m.cells, m.peak_rss_gib);
+    const std::string key = fmt::format("cfddem_1e{}", static_cast<int>(std::lround(std::log10(static_cast<double>(n)))));
+    j[key + "_s_per_cfd_step"] = m.s_per_cfd_step;
+    j[key + "_peak_rss_GiB"] = m.peak_rss_gib;
+  }
+  j["provenance"] = hs::common::provenance();
+  if (options.json_file) hs::common::write_json(*options.json_file, j);
+  return 0;
+}
+
+}  // namespace hs::bench

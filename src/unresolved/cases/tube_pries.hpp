@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// Case type "tube-pries": RBC spheres in plasma in a periodic tube (CFD-DEM), Ht_d and mu_rel vs Pries 1992.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "closures/closure_registry.hpp"
+#include "common/case_request.hpp"
+#include "unresolved/dem/particle_params.hpp"
+#include "unresolved/fvm/fvm_solver.hpp"
+
+namespace hs::unresolved {
+
+struct TubePriesConfig {
+  double diameter_m = 0.0;
+  double length_m = 0.0;
+  double tube_hematocrit = 0.0;          // Ht_c: RBC volume / tube volume at insertion
+  FluidProperties fluid{};
+  double pressure_gradient_Pa_m = 0.0;   // dp/dz < 0
+  ParticleParams particles{};
+  int cells_across = 10;
+  double dt_s = 0.0;                     // CFD step
+  int n_coupling = 1;                    // DEM steps per CFD step
+  double end_time_s = 0.0;
+  double average_from_fraction = 0.5;    // Ht_d and Q are averaged over the last (1 - this) of the run
+  double steady_tolerance = 0.02;        // steady when the two last quarters' mean Ht_d differ by less
+  bool void_fraction_rate = false;       // d(eps)/dt source (see CouplingSettings::void_fraction_rate)
+  hs::closures::ClosureSpec drag{}, lift{}, deformation{};   // model "none": no lift / DI = 0
+  std::uint64_t seed = 1;
+};
+
+struct TubePriesResult {
+  nlohmann::json summary;                // every measured and reference value (summary.json)
+  double ht_d = 0.0;
+  double mu_rel = 0.0;
+  double ht_d_pries = 0.0;
+  double mu_rel_pries = 0.0;
+  double ht_d_error_pct = 0.0;
+  double mu_rel_error_pct = 0.0;
+};
+
+/// Reads a tube-pries case file. Bad input (impossible hematocrit, unknown closure, Courant or DEM-step
+/// violation, a length that is not a whole number of cells) is a ConfigError naming the key.
+[[nodiscard]] TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick);
+/// Closure spec from one string: a registered name ("stokes", "schiller_naumann", "saffman_mei", "none") or a
+/// closure file (*.toml, model "expression").
+[[nodiscard]] hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file);
+
+/// Time series sample handed to the observer every CFD step.
+struct TubePriesSample {
+  double time_s, q_blood_m3_s, q_rbc_m3_s, ht_d, pressure_iterations;
+};
+
+/// Runs the plasma-only reference and the coupled tube; throws ConfigError for inputs found bad on the way
+/// (insertion impossible, particles outside the tube, DEM step).
+[[nodiscard]] TubePriesResult simulate_tube_pries(const TubePriesConfig& c,
+                                                  const std::function<void(const TubePriesSample&)>& observe);
+
+/// `hemoscale run` entry: returns 0 after a completed run (the comparison is reported, not judged).
+int run_tube_pries(const hs::common::CaseRequest& request);
+
+}  // namespace hs::unresolved

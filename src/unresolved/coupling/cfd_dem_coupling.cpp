@@ -1,0 +1,289 @@
+// SPDX-License-Identifier: MIT
+// The CFD-DEM coupling step: particle forces from the fluid, DEM sub-steps, grid fields and the exchange.
+#include "unresolved/coupling/cfd_dem_coupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "common/dimensionless_groups.hpp"
+#include "common/errors.hpp"
+
+namespace hs::unresolved {
+namespace {
+
+using hs::common::Vec3;
+
+Vec3 particle_position(const ParticleStore& p, std::size_t i) {
+  return {p.position_m()[0][i], p.position_m()[1][i], p.position_m()[2][i]};
+}
+Vec3 particle_velocity(const ParticleStore& p, std::size_t i) {
+  return {p.velocity_m_s()[0][i], p.velocity_m_s()[1][i], p.velocity_m_s()[2][i]};
+}
+
+/// Shear rate sqrt(2 S:S) of a velocity gradient g[a][b] = du_a/dx_b, 1/s.
+double shear_rate(const std::array<Vec3, 3>& g) {
+  double s2 = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      const double s = 0.5 * (g[static_cast<std::size_t>(a)][b] + g[static_cast<std::size_t>(b)][a]);
+      s2 += s * s;
+    }
+  }
+  return std::sqrt(2.0 * s2);
+}
+
+/// The solver fills the ghosts of eps and Ksl itself, not those of Us and f, which its face averages read.
+template <typename T>
+void fill_ghosts(const FvmGrid& grid, BlockField<T>& field) {
+  for (int a = 0; a < 3; ++a) {
+    if (grid.periodic(a)) {
+      field.fill_periodic(a, grid.cells()[static_cast<std::size_t>(a)]);
+    } else {
+      field.fill_zero_gradient(a);
+    }
+  }
+}
+
+}  // namespace
+
+CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSettings settings, CouplingClosures closures)
+    : fluid_(fluid), dem_(dem), settings_(settings), closures_(std::move(closures)), map_(fluid.grid()),
+      eps_old_(fluid.grid().cells(), 1.0), lift_reaction_N_(fluid.grid().cells(), Vec3{}) {
+  if (!closures_.drag) throw hs::common::ConfigError("coupling: a drag closure is required");
+  const double ratio = fluid_.settings().dt_s / dem_.time_step_s();
+  if (settings_.n_coupling < 1 || std::abs(ratio - settings_.n_coupling) > 1e-9 * ratio) {
+    throw hs::common::ConfigError(fmt::format("coupling: dt_CFD / dt_DEM = {:.6g} must equal n_coupling = {}",
+                                              ratio, settings_.n_coupling));
+  }
+}
+
+Vec3 CfdDemCoupling::radial_unit(const Vec3& x) const {
+  Vec3 r = x - settings_.axis_point_m;
+  r[settings_.axis] = 0.0;
+  const double n = norm(r);
+  return n > 0.0 ? r / n : Vec3{};
+}
+
+hs::closures::ClosureInputs CfdDemCoupling::inputs(std::size_t i, const Vec3& uf, const std::array<Vec3, 3>& grad,
+                                                  double local_ht) const {
+  const ParticleStore& p = dem_.particles();
+  const double nu = fluid_.fluid().kinematic_viscosity_m2_s;
+  const double d = 2.0 * p.radius_m()[i];
+  const Vec3 slip = particle_velocity(p, i) - uf;
+  const double gd = shear_rate(grad);
+  hs::closures::ClosureInputs in;
+  in.re_p = hs::common::particle_reynolds(d, norm(slip), nu);
+  in.re_shear = gd * d * d / nu;   // Saffman/Mei shear Reynolds number (closure_inputs.hpp)
+  in.gamma_plus = hs::common::shear_rate_plus(gd, settings_.tube_radius_m, nu);
+  in.u_r_plus = mean_velocity_m_s_ > 0.0
+                    ? hs::common::slip_velocity_plus(particle_velocity(p, i)[settings_.axis], uf[settings_.axis], mean_velocity_m_s_)
+                    : 0.0;
+  in.hematocrit = local_ht;
+  return in;
+}
+
+void CfdDemCoupling::particle_forces() {
+  ParticleStore& p = dem_.particles();
+  const std::size_t n = p.n_owned();
+  const double rho = fluid_.fluid().density_kg_m3;
+  const double mu = rho * fluid_.fluid().kinematic_viscosity_m2_s;
+  auto& ext = p.external_force_N();
+  auto& beta = p.drag_coefficient_N_s_m();
+  auto& uf_col = p.fluid_velocity_m_s();
+  auto& di = p.deformation_index();
+  lift_reaction_N_.fill(Vec3{});
+  map_.locate(p);
+  const BlockField<double>& eps = fluid_.void_fraction();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 x = particle_position(p, i);
+    const Vec3 uf = fluid_.velocity_at(x);
+    const auto grad = fluid_.velocity_gradient_at(x);
+    hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)]);
+    // DI = (L - B)/(L + B) lies in [0, 1) by definition; a learned DI evaluated outside its training range can
+    // leave it (e.g. u_r+ > 0 in a transient), and a negative DI then fed back into C_d(DI) runs away.
+    if (closures_.deformation) in.di = std::clamp(closures_.deformation->deformation_index(in), 0.0, 0.999);
+    di[i] = in.di;
+    const double d = 2.0 * p.radius_m()[i];
+    const double vp = std::numbers::pi / 6.0 * d * d * d;
+    beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in);
+    if (!(beta[i] >= 0.0) || !std::isfinite(beta[i])) {
+      throw hs::common::NumericalError(fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
+                                                   "gamma+ = {:.4g}, u_r+ = {:.4g}): a drag coefficient must be finite and >= 0",
+                                                   beta[i], in.re_p, in.di, in.gamma_plus, in.u_r_plus));
+    }
+    Vec3 f{};
+    if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
+    if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
+    if (closures_.lift) {
+      const double ur = norm(uf - particle_velocity(p, i));
+      const Vec3 lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(in) * ur * ur) * radial_unit(x);
+      f = f + lift;
+      for (int m = 0; m < kMarkersPerSphere; ++m) lift_reaction_N_[map_.cell(i, m)] -= lift / kMarkersPerSphere;
+    }
+    for (int a = 0; a < 3; ++a) {
+      ext[static_cast<std::size_t>(a)][i] = f[a];
+      uf_col[static_cast<std::size_t>(a)][i] = uf[a];
+    }
+  }
+}
+
+void CfdDemCoupling::fill_fields() {
+  ParticleStore& p = dem_.particles();
+  map_.locate(p);
+  const bool refresh = steps_ % settings_.refresh_every == 0;
+  const double dt = fluid_.settings().dt_s;
+  if (refresh && settings_.void_fraction_feedback) {
+    BlockField<double>& eps = fluid_.void_fraction();
+    stats_.lost_solid_volume_m3 = map_.void_fraction(p, settings_.eps_min, eps);
+    BlockField<double>& rate = fluid_.void_fraction_rate_1_s();
+    for (std::size_t c = 0; c < eps.data().size(); ++c) {
+      // No rate on the first coupling step: eps_old is not a state of this run (methods note sec. 8, item 6).
+      rate[c] = steps_ == 0 || !settings_.void_fraction_rate ? 0.0 : (eps[c] - eps_old_[c]) / (dt * settings_.refresh_every);
+    }
+    eps_old_ = eps;
+  }
+  BlockField<double> weight(fluid_.grid().cells(), 0.0);
+  BlockField<double> ksl(fluid_.grid().cells(), 0.0);
+  BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
+  us.fill(Vec3{});
+  constexpr double w = 1.0 / kMarkersPerSphere;
+  for (std::size_t i = 0; i < map_.size(); ++i) {
+    const Vec3 v = particle_velocity(p, i);
+    const double beta = p.drag_coefficient_N_s_m()[i];
+    for (int m = 0; m < kMarkersPerSphere; ++m) {
+      const std::size_t c = map_.cell(i, m);
+      weight[c] += w;
+      us[c] += w * v;
+      ksl[c] += w * beta / map_.fluid_volume_m3(c);
+    }
+  }
+  for (std::size_t c = 0; c < weight.data().size(); ++c) {
+    if (weight[c] > 0.0) us[c] = us[c] / weight[c];
+  }
+  fill_ghosts(fluid_.grid(), us);
+  if (refresh && settings_.fluid_drag == FluidDrag::implicit) {
+    fluid_.implicit_coefficient_kg_m3_s() = ksl;
+  }
+  if (refresh) fluid_.coupling_fields_changed();
+}
+
+void CfdDemCoupling::exchange_drag() {
+  ParticleStore& p = dem_.particles();
+  const FvmGrid& grid = fluid_.grid();
+  const double dt = fluid_.settings().dt_s;
+  BlockField<Vec3>& f = fluid_.explicit_force_density_N_m3();
+  f.fill(Vec3{});
+  stats_.drag_impulse_particles_N_s = {};
+  for (std::size_t i = 0; i < map_.size(); ++i) {
+    const Vec3 j{p.drag_impulse_N_s()[0][i], p.drag_impulse_N_s()[1][i], p.drag_impulse_N_s()[2][i]};
+    stats_.drag_impulse_particles_N_s += j;
+    for (int m = 0; m < kMarkersPerSphere; ++m) {
+      const std::size_t c = map_.cell(i, m);
+      f[c] -= j / (kMarkersPerSphere * map_.fluid_volume_m3(c) * dt);
+    }
+  }
+  if (map_.size() > 0) {   // give back the imbalance of earlier steps through the particles' cells
+    const Vec3 share = stats_.pending_N_s / static_cast<double>(map_.size() * kMarkersPerSphere);
+    for (std::size_t i = 0; i < map_.size(); ++i) {
+      for (int m = 0; m < kMarkersPerSphere; ++m) {
+        const std::size_t c = map_.cell(i, m);
+        f[c] -= share / (map_.fluid_volume_m3(c) * dt);
+      }
+    }
+  }
+  const BlockField<double>& ksl = fluid_.implicit_coefficient_kg_m3_s();
+  const BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
+  const auto& n = grid.cells();
+  stats_.explicit_to_fluid_N_s = {};
+  for (int k = 0; k < n[2]; ++k) {
+    for (int jj = 0; jj < n[1]; ++jj) {
+      for (int i = 0; i < n[0]; ++i) {
+        const std::size_t c = f.index(i, jj, k);
+        if (grid.fluid_fractions()[c] <= 0.0) continue;
+        f[c] += lift_reaction_N_[c] / map_.fluid_volume_m3(c);
+        if (settings_.fluid_drag == FluidDrag::implicit && ksl[c] > 0.0) {
+          f[c] -= ksl[c] * (us[c] - fluid_.cell_velocity(i, jj, k));   // the implicit part's explicit remainder
+        }
+        stats_.explicit_to_fluid_N_s += (map_.fluid_volume_m3(c) * dt) * f[c];
+      }
+    }
+  }
+}
+
+void CfdDemCoupling::step() {
+  if (steps_ == 0) particle_forces();
+  ParticleStore& p = dem_.particles();
+  for (auto& col : p.drag_impulse_N_s()) std::fill(col.begin(), col.end(), 0.0);
+  for (int s = 0; s < settings_.n_coupling; ++s) dem_.step();
+  fill_fields();
+  exchange_drag();
+  fill_ghosts(fluid_.grid(), fluid_.explicit_force_density_N_m3());
+  fluid_.step();
+  stats_.received_by_fluid_N_s = received_by_fluid_N_s();
+  stats_.pending_N_s += stats_.received_by_fluid_N_s + stats_.drag_impulse_particles_N_s;
+  ++steps_;
+  particle_forces();
+}
+
+Vec3 CfdDemCoupling::fluid_momentum_kg_m_s() const {
+  const FvmGrid& grid = fluid_.grid();
+  const BlockField<double>& eps = fluid_.void_fraction();
+  const double v_cell = std::pow(grid.dx_m(), 3);
+  Vec3 total{};
+  for (int c = 0; c < 3; ++c) {
+    const BlockField<double>& u = fluid_.face_velocity(c);
+    const int ni = grid.node_count(c, 0);
+    const int nj = grid.node_count(c, 1);
+    const int nk = grid.node_count(c, 2);
+    for (int k = 0; k < nk; ++k) {
+      for (int j = 0; j < nj; ++j) {
+        for (int i = 0; i < ni; ++i) {
+          if (grid.kind(c, i, j, k) != NodeKind::active) continue;
+          const std::size_t idx = u.index(i, j, k);
+          const double e = 0.5 * (eps[idx - static_cast<std::size_t>(eps.stride(c))] + eps[idx]);
+          total[c] += fluid_.fluid().density_kg_m3 * e * u[idx] * v_cell;
+        }
+      }
+    }
+  }
+  return total;
+}
+
+Vec3 CfdDemCoupling::received_by_fluid_N_s() const {
+  // The exchange terms of the solver's momentum row, (Ksl_f (Us_f - u_f) + f_f) dx^3 dt, with its face averages.
+  const FvmGrid& grid = fluid_.grid();
+  const BlockField<double>& ksl = fluid_.implicit_coefficient_kg_m3_s();
+  const BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
+  const BlockField<Vec3>& f = fluid_.explicit_force_density_N_m3();
+  const double vdt = std::pow(grid.dx_m(), 3) * fluid_.settings().dt_s;
+  Vec3 total{};
+  for (int c = 0; c < 3; ++c) {
+    const BlockField<double>& u = fluid_.face_velocity(c);
+    const auto sc = static_cast<std::size_t>(u.stride(c));
+    for (int k = 0; k < grid.node_count(c, 2); ++k) {
+      for (int j = 0; j < grid.node_count(c, 1); ++j) {
+        for (int i = 0; i < grid.node_count(c, 0); ++i) {
+          if (grid.kind(c, i, j, k) != NodeKind::active) continue;
+          const std::size_t idx = u.index(i, j, k);
+          const double ks = 0.5 * (ksl[idx - sc] + ksl[idx]);
+          const double usf = 0.5 * (us[idx - sc][c] + us[idx][c]);
+          const double ff = 0.5 * (f[idx - sc][c] + f[idx][c]);
+          total[c] += (ks * (usf - u[idx]) + ff) * vdt;
+        }
+      }
+    }
+  }
+  return total;
+}
+
+Vec3 CfdDemCoupling::particle_momentum_kg_m_s() const {
+  const ParticleStore& p = dem_.particles();
+  Vec3 total{};
+  for (std::size_t i = 0; i < p.n_owned(); ++i) total += p.mass_kg()[i] * particle_velocity(p, i);
+  return total;
+}
+
+}  // namespace hs::unresolved

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// The tube-pries case: the committed case runs (quick) and summarises against Pries; the learned-closure path
+// runs on the synthetic closure files; bad inputs are ConfigErrors naming the key (exit code 2 in the CLI).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/config/config_file.hpp"
+#include "common/errors.hpp"
+#include "unresolved/cases/tube_pries.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+hs::common::CaseRequest pries_request(hs::common::ConfigFile& file, const fs::path& out) {
+  auto section = file.root().section("case");
+  (void)section.string("type");
+  return {.case_dir = file.file().parent_path(), .config = &file, .output_dir = out, .resume = false, .quiet = true,
+          .quick = true};
+}
+
+TEST(TubePriesCase, CommittedCaseRunsAndSummarises) {
+  const fs::path out = fs::temp_directory_path() / "hs_tube_pries_case";
+  fs::remove_all(out);
+  auto file = hs::common::ConfigFile::load(fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries/case.toml");
+  EXPECT_EQ(hs::unresolved::run_tube_pries(pries_request(*file, out)), 0);
+  std::ifstream in(out / "summary.json");
+  const auto s = nlohmann::json::parse(in);
+  for (const char* key : {"discharge_hematocrit", "relative_apparent_viscosity", "pries_discharge_hematocrit",
+                          "pries_relative_apparent_viscosity", "ht_d_error_pct", "mu_rel_error_pct", "groups"}) {
+    EXPECT_TRUE(s.contains(key)) << key;
+  }
+  // Physical bounds, not accuracy (the quick run is 20 steps): 0 < Ht_d < 1 and the cells slow the flow a bit.
+  EXPECT_GT(s["discharge_hematocrit"].get<double>(), 0.0);
+  EXPECT_LT(s["discharge_hematocrit"].get<double>(), 1.0);
+  EXPECT_GT(s["relative_apparent_viscosity"].get<double>(), 0.9);
+  // Pries 1992 at D = 30 um, Ht_T = 0.0998 (the achieved insertion): Ht_D = 0.1594 (pries1992 tests).
+  EXPECT_NEAR(s["pries_discharge_hematocrit"].get<double>(), 0.1594, 5e-4);
+  EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
+}
+
+std::string pries_case(const std::string& hematocrit, const std::string& drag, const std::string& n_coupling) {
+  return R"([case]
+type = "tube-pries"
+[geometry]
+diameter_m = 30e-6
+length_m = 30e-6
+[fluid]
+density_kg_m3 = 1025.0
+kinematic_viscosity_m2_s = 1.2e-6
+[flow]
+pressure_gradient_Pa_m = -4.4e4
+[cells]
+tube_hematocrit = )" + hematocrit + R"(
+[particles]
+youngs_modulus_Pa = 1.0e3
+[coupling]
+drag = ")" + drag + R"("
+[numerics]
+cells_across_diameter = 10
+dt_s = 2e-4
+n_coupling = )" + n_coupling + R"(
+end_time_s = 2e-3
+)";
+}
+
+void expect_config_error(const std::string& text, const std::string& key) {
+  auto file = hs::common::ConfigFile::parse(text, "case.toml");
+  (void)file->root().section("case").string("type");
+  try {
+    (void)hs::unresolved::parse_tube_pries(*file, false);
+    ADD_FAILURE() << "no ConfigError for " << key;
+  } catch (const hs::common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+  }
+}
+
+TEST(TubePriesCase, BadInputsNameTheKey) {
+  expect_config_error(pries_case("0.10", "no_such_drag", "125"), "drag");          // unknown closure
+  expect_config_error(pries_case("0.80", "stokes", "125"), "tube_hematocrit");     // above random close packing
+  expect_config_error(pries_case("0.10", "stokes", "1"), "n_coupling");            // DEM step 10x too large
+}
+
+TEST(TubePriesCase, ImpossibleHematocritForThisTubeIsAConfigError) {
+  // 0.6 is allowed by the parser but cannot be inserted without overlaps in a 30 um tube (FCC capacity ~0.5 here).
+  auto file = hs::common::ConfigFile::parse(pries_case("0.60", "stokes", "125"), "case.toml");
+  (void)file->root().section("case").string("type");
+  const auto c = hs::unresolved::parse_tube_pries(*file, true);
+  EXPECT_THROW((void)hs::unresolved::simulate_tube_pries(c, [](const auto&) {}), hs::common::ConfigError);
+}
+
+TEST(TubePriesCase, LearnedClosureFilesRunThroughTheSamePath) {
+  const fs::path synthetic = fs::path(HS_SOURCE_DIR) / "data/closures/synthetic";
+  auto file = hs::common::ConfigFile::parse(pries_case("0.05", (synthetic / "drag_coefficient/cd_di_rep.toml").string(), "125"),
+                                            "case.toml");
+  (void)file->root().section("case").string("type");
+  auto c = hs::unresolved::parse_tube_pries(*file, true);
+  c.deformation = hs::unresolved::closure_spec_from((synthetic / "deformation_index/di_gamma_ur.toml").string());
+  c.lift = hs::unresolved::closure_spec_from((synthetic / "lift_coefficient/cl_di_rep.toml").string());
+  const auto r = hs::unresolved::simulate_tube_pries(c, [](const auto&) {});
+  EXPECT_TRUE(std::isfinite(r.ht_d));
+  EXPECT_TRUE(std::isfinite(r.mu_rel));
+  EXPECT_NE(r.summary["drag"].get<std::string>().find("cd_di_rep.toml"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale validate pries`: nine tube-pries runs, a CSV/JSON table of Ht_d and mu_rel errors, and a plot.
+#include "validate/pries_validation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+#include "common/io/csv_writer.hpp"
+#include "common/run_folder.hpp"
+#include "unresolved/cases/tube_pries.hpp"
+#include "unresolved/dem/hertz_contact_law.hpp"
+
+namespace hs::unresolved {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The first *.toml in a folder (a learned closure set holds one per role), or an empty path.
+fs::path first_toml(const fs::path& dir) {
+  if (!fs::is_directory(dir)) return {};
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files.empty() ? fs::path{} : files.front();
+}
+
+void select_closures(const std::string& choice, TubePriesConfig& c) {
+  c.drag = closure_spec_from("schiller_naumann");   // rigid-sphere baseline (methods note 3.2)
+  c.lift = closure_spec_from("none");
+  c.deformation = closure_spec_from("none");
+  if (choice.empty()) return;
+  if (fs::is_directory(choice)) {
+    const fs::path drag = first_toml(fs::path(choice) / "drag_coefficient");
+    if (drag.empty()) throw hs::common::ConfigError(fmt::format("--closures {}: no drag_coefficient/*.toml in the folder", choice));
+    c.drag = closure_spec_from(drag.string());
+    if (const fs::path f = first_toml(fs::path(choice) / "lift_coefficient"); !f.empty()) c.lift = closure_spec_from(f.string());
+    if (const fs::path f = first_toml(fs::path(choice) / "deformation_index"); !f.empty()) c.deformation = closure_spec_from(f.string());
+    return;
+  }
+  c.drag = closure_spec_from(choice);
+}
+
+TubePriesConfig config_for(double diameter_um, double hematocrit, bool quick, const std::string& closures) {
+  TubePriesConfig c;
+  c.diameter_m = diameter_um * 1e-6;
+  c.cells_across = quick ? 6 : 10;
+  const double dx = c.diameter_m / c.cells_across;
+  // Periodic length about 2 D (at least 30 um, four RBC diameters), a whole number of cells.
+  c.length_m = dx * std::ceil(std::max(quick ? 1.0 * c.diameter_m : 2.0 * c.diameter_m, 30e-6) / dx);
+  c.tube_hematocrit = hematocrit;
+  c.fluid = {.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6};   // plasma, rbc_blood_properties.csv
+  const double mu = c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s;
+  const double r = 0.5 * c.diameter_m;
+  const double u_mean = 1e-3;   // plasma mean velocity 1 mm/s: wall shear 4u/R = 80-270 1/s, Pries' high-shear regime
+  c.pressure_gradient_Pa_m = -8.0 * mu * u_mean / (r * r);
+  c.particles = default_particle_params();
+  c.particles.particle.youngs_modulus_Pa = 1e3;   // as cases/unresolved/tube-pries: soft contacts, overlaps ~1% of r
+  c.particles.wall.youngs_modulus_Pa = 1e3;
+  c.dt_s = std::min(2e-4, 0.25 * dx / (2.0 * u_mean));   // Courant <= 0.25 at the plasma centreline speed
+  const double limit = 0.1 * std::min(rayleigh_time_s(c.particles), hertz_time_s(c.particles, c.particles.max_impact_velocity_m_s));
+  c.n_coupling = static_cast<int>(std::ceil(c.dt_s / (0.9 * limit)));
+  c.end_time_s = quick ? 0.01 : 0.1;
+  c.seed = 1;
+  select_closures(closures, c);
+  return c;
+}
+
+fs::path output_dir(const hs::common::TaskOptions& options) {
+  return options.json_file ? fs::absolute(*options.json_file).parent_path() : fs::current_path();
+}
+
+}  // namespace
+
+int validate_pries(const hs::common::TaskOptions& options) {
+  const fs::path dir = output_dir(options);
+  const fs::path csv_path = dir / "pries_validation.csv";
+  std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
+                                       "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
+                                       "mu_rel_error_pct", "rbc_count", "steady"});
+  nlohmann::json result = {{"validation", "pries"},
+                           {"reference", "Pries, Neuhaus & Gaehtgens 1992, Am J Physiol 263:H1770 (in vitro, high shear)"},
+                           {"closures", options.extra.empty() ? "schiller_naumann (rigid-sphere baseline)" : options.extra},
+                           {"quick", options.quick}};
+  double max_error = 0.0;
+  for (const double d_um : {30.0, 50.0, 100.0}) {
+    for (const double ht : {0.05, 0.10, 0.15}) {
+      const TubePriesConfig c = config_for(d_um, ht, options.quick, options.extra);
+      const TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
+      const double err = std::max(std::abs(r.ht_d_error_pct), std::abs(r.mu_rel_error_pct));
+      max_error = std::max(max_error, err);
+      fmt::print("pries: D = {:5.1f} um Ht_c = {:.2f}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
+                 d_um, ht, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
+      csv->row({d_um, ht, r.summary["tube_hematocrit"].get<double>(), r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries,
+               r.mu_rel_error_pct, r.summary["rbc_count"].get<double>(), r.summary["steady"].get<bool>() ? 1.0 : 0.0});
+      nlohmann::json row = r.summary;
+      row["n_coupling"] = c.n_coupling;
+      row["dt_s"] = c.dt_s;
+      row["end_time_s"] = c.end_time_s;
+      result["cases"].push_back(row);
+    }
+  }
+  result["max_error_pct"] = max_error;
+  result["provenance"] = hs::common::provenance();
+  csv.reset();   // closes the file before the plot reads it
+  const fs::path png = dir / "pries_validation.png";
+  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}'", (fs::path(HS_SOURCE_DIR) / "tools/plot_pries.py").string(),
+                                      csv_path.string(), png.string());
+  result["plot"] = std::system(cmd.c_str()) == 0 ? png.string() : "";
+  hs::common::write_json(options.json_file ? *options.json_file : dir / "pries_validation.json", result);
+  fmt::print("pries: max error {:.1f}% (table {}, plot {})\n", max_error, csv_path.string(), png.string());
+  return 0;
+}
+
+}  // namespace hs::unresolved

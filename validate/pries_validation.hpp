@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale validate pries`: the Fahraeus-Lindqvist table of the CFD-DEM tube against Pries et al. 1992.
+#pragma once
+
+#include "common/case_request.hpp"
+
+namespace hs::unresolved {
+
+/// D = 30, 50, 100 um x Ht_c = 0.05, 0.10, 0.15; writes pries_validation.csv/.json/.png (next to --json, or in
+/// the working directory). --closures NAME|FILE|DIR picks the drag (a name or a drag closure file) or, for a
+/// folder, the learned set DIR/{drag_coefficient,lift_coefficient,deformation_index}/*.toml. Returns 0 when
+/// every case ran (the errors are reported, not judged: the rigid-sphere baseline is not expected to pass).
+int validate_pries(const hs::common::TaskOptions& options);
+
+}  // namespace hs::unresolved
