@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Strict reading of the tube-cell case file and the choice of lattice units from the Mach limit.
 #include "resolved/cases/tube_cell_config.hpp"
+#include "common/fluid_properties.hpp"
 
 #include <cmath>
 
@@ -46,9 +47,9 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   auto geometry = root.section("geometry");
   c.radius_m = geometry.positive("radius_m");
   c.length_m = geometry.positive("length_m");
-  auto fluid = root.section("fluid");
-  c.density_kg_m3 = fluid.positive("density_kg_m3");
-  c.kinematic_viscosity_m2_s = fluid.positive("kinematic_viscosity_m2_s");
+  const common::FluidProperties fluid = common::parse_fluid(root.section("fluid"));
+  c.density_kg_m3 = fluid.density_kg_m3;
+  c.kinematic_viscosity_m2_s = fluid.kinematic_viscosity_m2_s;
   auto flow = root.section("flow");
   c.reynolds = flow.positive("reynolds");
   auto cell = root.section("cell");

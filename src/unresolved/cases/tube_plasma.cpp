@@ -22,6 +22,7 @@
 #include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
+#include "common/fluid_properties.hpp"
 
 namespace hs::unresolved {
 namespace {
@@ -43,7 +44,6 @@ struct TubePlasmaConfig {
 TubePlasmaConfig parse(hs::common::ConfigFile& file, bool quick) {
   auto root = file.root();
   auto geometry = root.section("geometry");
-  auto fluid = root.section("fluid");
   auto flow = root.section("flow");
   auto numerics = root.section("numerics");
   auto output = root.section_or_empty("output");
@@ -51,7 +51,7 @@ TubePlasmaConfig parse(hs::common::ConfigFile& file, bool quick) {
   TubePlasmaConfig c{};
   c.diameter_m = geometry.positive("diameter_m");
   c.length_m = geometry.positive("length_m");
-  c.fluid = {.density_kg_m3 = fluid.positive("density_kg_m3"), .kinematic_viscosity_m2_s = fluid.positive("kinematic_viscosity_m2_s")};
+  c.fluid = hs::common::parse_fluid(root.section("fluid"));
   flow.forbid_together("pressure_gradient_Pa_m", "flow_rate_m3_s", "the flow is driven either by a pressure gradient or by a flow rate");
   if (flow.has("flow_rate_m3_s")) {
     c.drive = {.mode = FlowDrive::Mode::flow_rate, .axis = 2, .flow_rate_m3_s = flow.positive("flow_rate_m3_s")};

@@ -17,6 +17,7 @@
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
+#include "common/fluid_properties.hpp"
 
 namespace hs::unresolved {
 namespace {
@@ -52,7 +53,6 @@ hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file) {
 TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   auto root = file.root();
   auto geometry = root.section("geometry");
-  auto fluid = root.section("fluid");
   auto flow = root.section("flow");
   auto cells = root.section("cells");
   auto particles = root.section_or_empty("particles");
@@ -61,7 +61,7 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   TubePriesConfig c{};
   c.diameter_m = geometry.positive("diameter_m");
   c.length_m = geometry.positive("length_m");
-  c.fluid = {.density_kg_m3 = fluid.positive("density_kg_m3"), .kinematic_viscosity_m2_s = fluid.positive("kinematic_viscosity_m2_s")};
+  c.fluid = hs::common::parse_fluid(root.section("fluid"));
   c.pressure_gradient_Pa_m = flow.number_in("pressure_gradient_Pa_m", -1e12, -1e-12);
   // Random close packing of equal spheres is ~0.64 (Scott & Kilgour 1969); insertion reports the actual limit.
   c.tube_hematocrit = cells.number_in("tube_hematocrit", 1e-6, 0.64);

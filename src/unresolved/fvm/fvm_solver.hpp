@@ -12,6 +12,7 @@
 #include "common/vec3.hpp"
 #include "unresolved/fvm/block_field.hpp"
 #include "unresolved/fvm/fvm_grid.hpp"
+#include "common/fluid_properties.hpp"
 #include "unresolved/fvm/pressure_solver.hpp"
 
 namespace hs::unresolved {
@@ -19,10 +20,7 @@ namespace hs::unresolved {
 /// Loops over fewer unknowns than this run on one thread: an OpenMP fork costs more than the work.
 inline constexpr long kParallelRows = 20000;
 
-struct FluidProperties {
-  double density_kg_m3;
-  double kinematic_viscosity_m2_s;
-};
+using FluidProperties = common::FluidProperties;
 
 struct PisoSettings {
   double dt_s;                          // fixed CFD time step (CFDEM forbids a variable one)
