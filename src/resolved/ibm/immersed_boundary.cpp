@@ -38,6 +38,25 @@ bool ImmersedBoundary::to_local(std::array<int, 3> global, std::array<int, 3>& l
   return true;
 }
 
+namespace {
+
+/// Adds the per-rank partial sums (rho, j_x, j_y, j_z per marker) over all ranks and turns them into the
+/// marker density and velocity u = j / rho: each rank holds only its own nodes' share of every stencil.
+MarkerFluid reduce_marker_sums(std::vector<double>& sums, MPI_Comm comm) {
+  MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, comm);
+  const std::size_t n = sums.size() / 4;
+  MarkerFluid out;
+  out.rho_lu.resize(n);
+  out.u_lu.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    out.rho_lu[k] = sums[4 * k];
+    out.u_lu[k] = common::Vec3{sums[4 * k + 1], sums[4 * k + 2], sums[4 * k + 3]} / sums[4 * k];
+  }
+  return out;
+}
+
+}  // namespace
+
 void ImmersedBoundary::for_each_local_node(const common::Vec3& x_lu,
                                            const std::function<void(int, int, int, double)>& visit) const {
   const DeltaStencil s = delta_stencil(settings_.kernel, x_lu);
@@ -66,16 +85,7 @@ MarkerFluid ImmersedBoundary::interpolate(std::span<const common::Vec3> x_lu) co
       for (int a = 0; a < 3; ++a) sums[4 * k + 1 + static_cast<std::size_t>(a)] += w * m.rho * m.u[a];
     });
   }
-  MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM,
-                lattice_.decomposition().comm());
-  MarkerFluid out;
-  out.rho_lu.resize(n);
-  out.u_lu.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    out.rho_lu[k] = sums[4 * k];
-    out.u_lu[k] = common::Vec3{sums[4 * k + 1], sums[4 * k + 2], sums[4 * k + 3]} / sums[4 * k];
-  }
-  return out;
+  return reduce_marker_sums(sums, lattice_.decomposition().comm());
 }
 
 void ImmersedBoundary::spread(std::span<const common::Vec3> x_lu, std::span<const common::Vec3> f_lu) {
@@ -155,16 +165,7 @@ ForcingReport ImmersedBoundary::apply(const Markers& markers) {
         for (std::size_t a = 0; a < 3; ++a) sums[4 * k + 1 + a] += s.weight * (s.j0[static_cast<int>(a)] + 0.5 * field[a * stride + s.node]);
       }
     }
-    MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM,
-                  lattice_.decomposition().comm());
-    MarkerFluid out;
-    out.rho_lu.resize(n);
-    out.u_lu.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      out.rho_lu[k] = sums[4 * k];
-      out.u_lu[k] = common::Vec3{sums[4 * k + 1], sums[4 * k + 2], sums[4 * k + 3]} / sums[4 * k];
-    }
-    return out;
+    return reduce_marker_sums(sums, lattice_.decomposition().comm());
   };
   ForcingReport report;
   MarkerFluid fluid = interpolate_cached();
