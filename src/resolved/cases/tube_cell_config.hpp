@@ -31,9 +31,12 @@ struct TubeCellConfig {
   CollisionParams collision;        // tau derived
   WallRule wall;
   int membrane_every;
+  double membrane_mass_factor;      // numerical mass scaling of the membrane (see tube_cell_config.cpp)
   IbmSettings ibm;
+  TractionArea traction_area;       // which area the sampled fluid stress acts on
   // [run]
   double max_time_s;                // cap on simulated time
+  double max_jeffery_periods;       // or the cap in Jeffery periods at r* (0: not given)
   double sample_every_s;            // time-series sampling
   int settle_periods;               // whole periods that must agree before stopping (and are averaged)
   double settle_spread;             // relative spread of the per-period means that counts as settled
@@ -44,7 +47,12 @@ struct TubeCellConfig {
   double u_max_m_s;
   double dt_s;
   long sample_every_steps;
+  long spin_up_steps;               // the drive is switched on smoothly over these steps
 };
+
+/// Jeffery period 2 pi (r_e + 1/r_e) / gamma_dot of a spheroid of aspect ratio r_e = 0.37 (the RBC's thickness over
+/// diameter; Jeffery 1922), i.e. 19.3 / gamma_dot, at the undisturbed shear rate at the cell's r*; infinite on the axis.
+double jeffery_period_s(const TubeCellConfig& c);
 
 /// Reads and checks the whole case strictly. `quick` caps the run at 40 samples (CI); dx is kept, because at
 /// dx = 2 um the 258-vertex mesh is denser than the lattice (mean edge ~0.35 lu) and multi-direct forcing

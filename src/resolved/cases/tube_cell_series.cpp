@@ -22,9 +22,6 @@ enum Column { kDi, kCd, kCl, kInclination, kPhase };
 
 /// Viscous spin-up times R^2 / nu that a steady window must span at least.
 constexpr double kSpinUpTimes = 5.0;
-/// Jeffery period of a spheroid of aspect ratio r_e in shear: T = 2 pi (r_e + 1/r_e) / gamma_dot (Jeffery 1922);
-/// r_e = 0.37 for the RBC (thickness / diameter), so T = 19.3 / gamma_dot.
-constexpr double kJefferyPeriodTimesShearRate = 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37);
 
 /// max - min over the trailing `count` samples, relative to their mean magnitude.
 double trailing_relative_range(const std::vector<double>& v, std::size_t count) {
@@ -119,9 +116,8 @@ std::vector<double> TubeCellSeries::column(int which) const {
 
 double TubeCellSeries::steady_window_s() const {
   const double spin_up = kSpinUpTimes * config_.radius_m * config_.radius_m / config_.kinematic_viscosity_m2_s;
-  const double gamma = common::poiseuille_shear_rate(config_.u_max_m_s, config_.radial_position * config_.radius_m,
-                                                     config_.radius_m);
-  return gamma > 0.0 ? std::max(spin_up, kJefferyPeriodTimesShearRate / gamma) : spin_up;
+  const double period = jeffery_period_s(config_);
+  return std::isfinite(period) ? std::max(spin_up, period) : spin_up;
 }
 
 bool TubeCellSeries::settled() const {

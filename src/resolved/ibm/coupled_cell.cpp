@@ -46,7 +46,8 @@ void CoupledCell::membrane_solve() {
   for (std::size_t k = 0; k < areas_m2.size(); ++k) markers_.area_lu[k] = areas_m2[k] / dx2;
   if (!interval_starts()) return;
   const auto normals = membrane_.vertex_normals();
-  const TractionResult t = fluid_traction(ibm_, lattice_, {markers_.x_lu, normals, markers_.area_lu}, ring_);
+  const TractionResult t = fluid_traction(ibm_, lattice_, {markers_.x_lu, normals, markers_.area_lu, membrane_.triangles()},
+                                        ring_, settings_.traction_area);
   std::vector<common::Vec3> f_N(t.force_lu.size());
   report_.fluid_force_N = {};
   for (std::size_t k = 0; k < f_N.size(); ++k) {
@@ -54,6 +55,7 @@ void CoupledCell::membrane_solve() {
     report_.fluid_force_N += f_N[k];
   }
   report_.vertices_without_fluid = t.vertices_without_fluid;
+  report_.sample_distance_lu = t.mean_sample_distance_lu;
   membrane_.set_external_forces_N(f_N);
   membrane_.step();
   const auto v = membrane_.velocities_m_s();

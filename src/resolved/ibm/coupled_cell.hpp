@@ -16,6 +16,7 @@ struct CouplingSettings {
   IbmSettings ibm;
   int membrane_every = 2;          // lattice steps per membrane step, h = k dt (Palabos timestep_ShapeOp = 2)
   bool median_filter = true;       // Palabos-npFEM FILTERING is on (resolved-methods.md 1.4 step 6)
+  TractionArea traction_area = TractionArea::sampled_surface;   // see fluid_traction.hpp
   common::Vec3 lattice_origin_m;   // SI position of global lattice node (0, 0, 0)
 };
 
@@ -25,6 +26,7 @@ struct CouplingReport {
   common::Vec3 fluid_force_N;      // sum of the external forces given to the membrane at its last step
   double marker_drift_lu = 0.0;    // max |marker - npFEM vertex| before the snap at the end of an interval
   int vertices_without_fluid = 0;
+  double sample_distance_lu = 0.0; // mean distance of the stress samples outside the membrane
 };
 
 /// The state the coupling adds to the fluid and membrane (for checkpoints).

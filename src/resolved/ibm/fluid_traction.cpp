@@ -43,67 +43,113 @@ std::vector<common::Vec3> median_filter(std::span<const common::Vec3> values, co
   return out;
 }
 
+std::vector<common::Vec3> offset_area_vectors(std::span<const common::Vec3> x, std::span<const common::Vec3> normal,
+                                              std::span<const double> offset, std::span<const std::array<int, 3>> triangles) {
+  if (normal.size() != x.size() || offset.size() != x.size()) throw std::invalid_argument("offset_area_vectors: sizes differ");
+  std::vector<common::Vec3> moved(x.size());
+  for (std::size_t v = 0; v < x.size(); ++v) moved[v] = x[v] + offset[v] * normal[v];
+  std::vector<common::Vec3> area(x.size());
+  for (const auto& t : triangles) {
+    const common::Vec3& a = moved[static_cast<std::size_t>(t[0])];
+    const common::Vec3 third = common::cross(moved[static_cast<std::size_t>(t[1])] - a,
+                                             moved[static_cast<std::size_t>(t[2])] - a) / 6.0;
+    for (int corner : t) area[static_cast<std::size_t>(corner)] += third;
+  }
+  return area;
+}
+
 namespace {
 
-/// The stencil node (global coordinates, unwrapped) with the largest projection of its offset on the normal.
-std::array<int, 3> outermost_node(DeltaKernel kernel, const common::Vec3& x, const common::Vec3& n) {
+struct SampleNode {
+  std::array<int, 3> node;   // global coordinates, unwrapped
+  double distance;           // projection of its offset on the normal
+};
+
+/// The stencil node with the largest projection of its offset on the normal.
+SampleNode outermost_node(DeltaKernel kernel, const common::Vec3& x, const common::Vec3& n) {
   const DeltaStencil s = delta_stencil(kernel, x);
-  std::array<int, 3> best{};
-  double best_projection = -1e300;
+  SampleNode best{{}, -1e300};
   for (int k = 0; k < s.points; ++k)
     for (int j = 0; j < s.points; ++j)
       for (int i = 0; i < s.points; ++i) {
         const std::array<int, 3> g{s.base[0] + i, s.base[1] + j, s.base[2] + k};
         const double p = common::dot(common::Vec3{double(g[0]), double(g[1]), double(g[2])} - x, n);
-        if (p > best_projection) {
-          best_projection = p;
-          best = g;
-        }
+        if (p > best.distance) best = {g, p};
       }
   return best;
 }
 
-constexpr std::size_t kSlots = 5;   // shear force (3), pressure, found-fluid flag
+// Per vertex: viscous stress (6), pressure, found-fluid flag.
+constexpr std::size_t kSlots = 8;
+
+common::Vec3 stress_times(const double* s, const common::Vec3& a) {
+  return {s[0] * a.x + s[3] * a.y + s[4] * a.z, s[3] * a.x + s[1] * a.y + s[5] * a.z,
+          s[4] * a.x + s[5] * a.y + s[2] * a.z};
+}
+
+/// The area vector each vertex's stress acts on.
+std::vector<common::Vec3> acting_areas(const SurfaceSample& surface, const std::vector<double>& distance,
+                                       TractionArea rule) {
+  std::vector<common::Vec3> area(surface.x_lu.size());
+  if (rule == TractionArea::sampled_surface) {
+    if (surface.triangles.empty()) throw std::invalid_argument("fluid_traction: the sampled surface needs triangles");
+    // Each vertex's area vector on the parallel surface at its own distance d_v. A vertex area vector is exactly
+    // quadratic in a uniform offset, so three offsets (0, 1, 2 lu) give it at any d. A neighbour's jump to another
+    // sample node then leaves this vertex's area unchanged (a mesh through the actual sample points does not).
+    std::array<std::vector<common::Vec3>, 3> at;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::vector<double> uniform(area.size(), static_cast<double>(k));
+      at[k] = offset_area_vectors(surface.x_lu, surface.normal, uniform, surface.triangles);
+    }
+    for (std::size_t v = 0; v < area.size(); ++v) {
+      const double d = distance[v];
+      area[v] = 0.5 * (d - 1.0) * (d - 2.0) * at[0][v] - d * (d - 2.0) * at[1][v] + 0.5 * d * (d - 1.0) * at[2][v];
+    }
+    return area;
+  }
+  for (std::size_t v = 0; v < area.size(); ++v) area[v] = surface.area_lu[v] * surface.normal[v];
+  return area;
+}
 
 }  // namespace
 
 TractionResult fluid_traction(const ImmersedBoundary& ibm, const FluidLattice& lattice, const SurfaceSample& surface,
-                              const std::vector<std::vector<int>>& ring) {
+                              const std::vector<std::vector<int>>& ring, TractionArea area_rule) {
   const std::size_t nv = surface.x_lu.size();
   if (surface.normal.size() != nv || surface.area_lu.size() != nv) throw std::invalid_argument("fluid_traction: sizes differ");
   std::vector<double> slots(kSlots * nv, 0.0);
+  std::vector<double> distance(nv);   // the same on every rank: the stencil is a function of x alone
   std::array<int, 3> local{};
   for (std::size_t v = 0; v < nv; ++v) {
-    const std::array<int, 3> g = outermost_node(ibm.settings().kernel, surface.x_lu[v], surface.normal[v]);
-    if (!ibm.to_local(g, local) || !lattice.is_fluid(local[0], local[1], local[2])) continue;
+    const SampleNode sample = outermost_node(ibm.settings().kernel, surface.x_lu[v], surface.normal[v]);
+    distance[v] = sample.distance;
+    if (!ibm.to_local(sample.node, local) || !lattice.is_fluid(local[0], local[1], local[2])) continue;
     const SymTensor s = lattice.viscous_stress(local[0], local[1], local[2]);
-    const common::Vec3& n = surface.normal[v];
-    const common::Vec3 sn{s[0] * n.x + s[3] * n.y + s[4] * n.z, s[3] * n.x + s[1] * n.y + s[5] * n.z,
-                          s[4] * n.x + s[5] * n.y + s[2] * n.z};
-    for (int a = 0; a < 3; ++a) slots[kSlots * v + static_cast<std::size_t>(a)] = surface.area_lu[v] * sn[a];
-    slots[kSlots * v + 3] = lattice.moments(local[0], local[1], local[2]).rho / 3.0;   // p = c_s^2 rho
-    slots[kSlots * v + 4] = 1.0;
+    for (std::size_t a = 0; a < 6; ++a) slots[kSlots * v + a] = s[a];
+    slots[kSlots * v + 6] = lattice.moments(local[0], local[1], local[2]).rho / 3.0;   // p = c_s^2 rho
+    slots[kSlots * v + 7] = 1.0;
   }
   MPI_Allreduce(MPI_IN_PLACE, slots.data(), static_cast<int>(slots.size()), MPI_DOUBLE, MPI_SUM,
                 lattice.decomposition().comm());
+  const std::vector<common::Vec3> area = acting_areas(surface, distance, area_rule);
   TractionResult result;
   double pa = 0.0;
   double a_sum = 0.0;
   for (std::size_t v = 0; v < nv; ++v) {
-    if (slots[kSlots * v + 4] == 0.0) continue;
-    pa += slots[kSlots * v + 3] * surface.area_lu[v];
-    a_sum += surface.area_lu[v];
+    result.mean_sample_distance_lu += distance[v] / static_cast<double>(nv);
+    if (slots[kSlots * v + 7] == 0.0) continue;
+    pa += slots[kSlots * v + 6] * common::norm(area[v]);
+    a_sum += common::norm(area[v]);
   }
   result.mean_pressure_lu = a_sum > 0.0 ? pa / a_sum : 0.0;
   result.force_lu.assign(nv, {});
   for (std::size_t v = 0; v < nv; ++v) {
-    if (slots[kSlots * v + 4] == 0.0) {
+    if (slots[kSlots * v + 7] == 0.0) {
       ++result.vertices_without_fluid;
       continue;
     }
-    const common::Vec3 shear{slots[kSlots * v], slots[kSlots * v + 1], slots[kSlots * v + 2]};
-    const double dp = slots[kSlots * v + 3] - result.mean_pressure_lu;
-    result.force_lu[v] = shear - dp * surface.area_lu[v] * surface.normal[v];
+    const double dp = slots[kSlots * v + 6] - result.mean_pressure_lu;
+    result.force_lu[v] = stress_times(&slots[kSlots * v], area[v]) - dp * area[v];
   }
   if (!ring.empty()) result.force_lu = median_filter(result.force_lu, ring);
   return result;

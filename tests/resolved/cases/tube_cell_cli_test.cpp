@@ -56,9 +56,16 @@ TEST(TubeCellCli, TauIsDerivedNotGiven) {
   EXPECT_NE(r.output.find("tau"), std::string::npos) << r.output;
 }
 
+TEST(TubeCellCli, CapInSecondsAndInPeriodsTogetherIsRejected) {
+  const auto dir = write_variant("two_caps", "max_jeffery_periods = 6 ", "max_jeffery_periods = 6\nmax_time_s = 0.1\n");
+  const Result r = run("run --quiet " + dir.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("max_jeffery_periods"), std::string::npos) << r.output;
+}
+
 TEST(TubeCellCli, QuickDragRunWritesSeriesAndGroups) {
   // 1 ms of the campaign case (dx = 1 um): 250 steps, enough to exercise every stage and output, not to settle.
-  const auto dir = write_variant("quick", "max_time_s = 0.5 ", "max_time_s = 0.001 ");
+  const auto dir = write_variant("quick", "max_jeffery_periods = 6 ", "max_time_s = 0.001 ");
   const auto out = dir / "out";
   const Result r = run("run --quiet --quick " + dir.string() + " --output " + out.string());
   EXPECT_EQ(r.code, 1) << r.output;   // 1 = ran but did not settle (capped), as intended here
@@ -84,13 +91,13 @@ TEST(TubeCellCli, QuickDragRunWritesSeriesAndGroups) {
 TEST(TubeCellCli, StoppedAndResumedRunGivesTheUninterruptedTimeSeries) {
   // 0.8 ms (4 samples) at once, versus 0.4 ms, then --resume of the same folder up to 0.8 ms. The checkpoint holds
   // the populations, force field, membrane, markers and samples, so the series must agree to the last printed digit.
-  const auto whole = write_variant("resume_whole", "max_time_s = 0.5 ", "max_time_s = 0.0008 ");
+  const auto whole = write_variant("resume_whole", "max_jeffery_periods = 6 ", "max_time_s = 0.0008 ");
   ASSERT_EQ(run("run --quiet " + whole.string() + " --output " + (whole / "out").string()).code, 1);
-  const auto part = write_variant("resume_part", "max_time_s = 0.5 ", "max_time_s = 0.0004 ");
+  const auto part = write_variant("resume_part", "max_jeffery_periods = 6 ", "max_time_s = 0.0004 ");
   const auto out = part / "out";
   ASSERT_EQ(run("run --quiet " + part.string() + " --output " + out.string()).code, 1);
   ASSERT_EQ(hs::common::read_csv(out / "timeseries.csv").column("drag_N").size(), 2u);
-  const auto rest = write_variant("resume_rest", "max_time_s = 0.5 ", "max_time_s = 0.0008 ");
+  const auto rest = write_variant("resume_rest", "max_jeffery_periods = 6 ", "max_time_s = 0.0008 ");
   const Result resumed = run("run --quiet " + rest.string() + " --output " + out.string() + " --resume");
   ASSERT_EQ(resumed.code, 1) << resumed.output;
   const auto a = hs::common::read_csv(whole / "out" / "timeseries.csv");
@@ -108,9 +115,10 @@ TEST(TubeCellCli, TwoRanksGiveTheSameTimeSeriesAsOne) {
   // decomposition invisible up to round-off; the CSV keeps 10 significant digits, so 1e-8 relative is the bound.
   std::ifstream in(fs::path(HS_SOURCE_DIR) / "cases/resolved/tube-lift/case.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto pos = text.find("max_time_s = 0.5 ");
+  const std::string cap = "max_jeffery_periods = 6 ";
+  const auto pos = text.find(cap);
   ASSERT_NE(pos, std::string::npos);
-  text.replace(pos, 17, "max_time_s = 0.0006 ");
+  text.replace(pos, cap.size(), "max_time_s = 0.0006 ");
   const auto dir = fs::temp_directory_path() / "hs_tube_cell_np2";
   fs::remove_all(dir);
   fs::create_directories(dir);

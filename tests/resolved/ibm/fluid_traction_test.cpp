@@ -6,6 +6,7 @@
 
 #include "../lbm/lbm_test_helpers.hpp"
 #include "resolved/ibm/fluid_traction.hpp"
+#include "resolved/membrane/rbc_mesh_generator.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -27,7 +28,7 @@ TEST_P(CouetteTraction, ViscousTractionMatchesMuTimesShearRate) {
   const std::vector<Vec3> x{{0.4, 7.3, 1.2}, {1.1, 8.6, 0.7}};
   const std::vector<Vec3> n{{0.0, 1.0, 0.0}, {0.0, -1.0, 0.0}};
   const std::vector<double> area{1.3, 0.7};
-  const TractionResult t = fluid_traction(ibm, *lattice, {x, n, area}, {});
+  const TractionResult t = fluid_traction(ibm, *lattice, {x, n, area, {}}, {}, TractionArea::membrane);
   const double tau_xy = collision.viscosity_lu() * u_wall / height;   // mu gamma, rho = 1
   // Couette flow is exact on the lattice with half-way bounce-back and TRT; 1e-9 covers the steady-state residual.
   EXPECT_NEAR(t.force_lu[0].x, area[0] * tau_xy, 1e-9 * tau_xy);
@@ -41,6 +42,29 @@ TEST_P(CouetteTraction, ViscousTractionMatchesMuTimesShearRate) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Tau, CouetteTraction, ::testing::Values(0.8, 20.0));
+
+TEST(OffsetAreaVectors, ScaleASphereByTheSquareOfItsRadiusAndCloseToZero) {
+  // Moving the vertices of a unit-sphere mesh out along their radii by d scales the mesh by 1 + d exactly, so the
+  // total area scales by (1 + d)^2 to round-off; a closed mesh's area vectors sum to zero to round-off.
+  const TriangleMesh mesh = make_sphere_mesh(642);
+  const std::vector<Vec3>& x = mesh.vertices_m;
+  const double d = 0.75;
+  const std::vector<double> zero(x.size(), 0.0);
+  const std::vector<double> offset(x.size(), d);
+  const auto a0 = offset_area_vectors(x, x, zero, mesh.triangles);
+  const auto a1 = offset_area_vectors(x, x, offset, mesh.triangles);
+  double total0 = 0.0;
+  double total1 = 0.0;
+  Vec3 sum;
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    total0 += common::norm(a0[v]);
+    total1 += common::norm(a1[v]);
+    sum += a1[v];
+    EXPECT_GT(common::dot(a1[v], x[v]), 0.0);   // outward
+  }
+  EXPECT_NEAR(total1 / total0, (1.0 + d) * (1.0 + d), 1e-12);
+  EXPECT_LT(common::norm(sum), 1e-13 * total1);
+}
 
 TEST(MedianFilter, RemovesASpikeAndKeepsAUniformField) {
   // Octahedron: every vertex has 4 neighbours.
