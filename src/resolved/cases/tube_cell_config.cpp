@@ -26,6 +26,9 @@ constexpr long kQuickSamples = 40;
 /// steps, 3x heavier after 280 steps, 5x was noisy, 10x stayed smooth (measured, docs/resolved-coupling.md). The
 /// default factor is 1.25 nu_lu k (10 there). The cell's Stokes number stays < 0.01 (summary: cell_stokes_number).
 constexpr double kMassFactorPerViscosityStep = 1.25;
+/// Largest relaxation time: one RBC at r* = 0.2 in the campaign tube ran stably at tau = 30.5 (Re 0.2) and diverged
+/// near the cell after ~540 steps at tau = 60.5 (Re 0.1, lattice velocity 0.04), measured; docs/resolved-coupling.md.
+constexpr double kMaxTauDefault = 30.5;
 /// Spin-up: the longer of R^2 / nu and 10 tau steps (the lattice stress relaxes over ~tau steps).
 constexpr double kSpinUpTaus = 10.0;
 
@@ -34,6 +37,7 @@ void read_numerics(hs::common::ConfigSection n, TubeCellConfig& c) {
   if (n.has("time_step_s")) n.fail("time_step_s", "is derived (dt = lattice_velocity dx / U_max); remove it");
   c.dx_m = n.positive("dx_m");
   c.lattice_velocity = n.number_in_or("lattice_velocity", 1e-4, kLatticeVelocityMax, kLatticeVelocityDefault);
+  c.max_tau = n.number_in_or("max_tau", 0.51, 1000.0, kMaxTauDefault);
   c.collision.model = n.one_of_or("collision", {"trt", "bgk"}, "trt") == "trt" ? CollisionModel::trt : CollisionModel::bgk;
   c.collision.magic = n.greater_than_or("trt_magic", 0.0, trt_magic_default);
   c.wall = n.one_of_or("wall", {"bouzidi", "half_way"}, "bouzidi") == "bouzidi" ? WallRule::bouzidi : WallRule::half_way;
@@ -89,6 +93,11 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   c.u_max_m_s = c.reynolds * c.kinematic_viscosity_m2_s / (2.0 * c.radius_m);
   c.dt_s = c.lattice_velocity * c.dx_m / c.u_max_m_s;
   c.collision.tau = 0.5 + 3.0 * c.kinematic_viscosity_m2_s * c.dt_s / (c.dx_m * c.dx_m);
+  if (c.collision.tau > c.max_tau) {   // low Re: a smaller lattice velocity (more steps) keeps tau at max_tau
+    c.collision.tau = c.max_tau;
+    c.dt_s = (c.max_tau - 0.5) * c.dx_m * c.dx_m / (3.0 * c.kinematic_viscosity_m2_s);
+    c.lattice_velocity = c.u_max_m_s * c.dt_s / c.dx_m;
+  }
   // Samples (and checkpoints) fall on membrane-step boundaries, where the coupling state is just positions/velocities.
   const long k = c.membrane_every;
   if (c.max_jeffery_periods > 0.0) {

@@ -27,7 +27,8 @@ struct TubeCellConfig {
   MembraneConfig membrane;          // [membrane]
   // [numerics]
   double dx_m;
-  double lattice_velocity;          // U_max in lattice units: fixes dt (and so tau)
+  double lattice_velocity;          // U_max in lattice units: fixes dt (and so tau); lowered if tau > max_tau
+  double max_tau;
   CollisionParams collision;        // tau derived
   WallRule wall;
   int membrane_every;

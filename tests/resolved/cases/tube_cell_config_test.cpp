@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// The derived numerics of the tube-cell case: the tau cap at low Re, the membrane mass scaling, the spin-up and the
+// cap in Jeffery periods, checked against the formulas they come from.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "resolved/cases/tube_cell_config.hpp"
+
+namespace hs::resolved {
+namespace {
+
+TubeCellConfig read_drag_case(double reynolds) {
+  std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/tube-drag/case.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string toml = text.str();
+  const std::string from = "reynolds = 0.5 ";
+  toml.replace(toml.find(from), from.size(), "reynolds = " + std::to_string(reynolds) + " ");
+  auto file = common::ConfigFile::parse(toml, "tube-drag/case.toml");
+  EXPECT_EQ(file->root().section("case").string("type"), "tube-cell");   // read by the case dispatcher in the app
+  return read_tube_cell(*file, false);
+}
+
+TEST(TubeCellConfig, Re05KeepsTheLatticeVelocityAndScalesTheMembraneMass) {
+  const TubeCellConfig c = read_drag_case(0.5);
+  // U_max = Re nu / D = 0.01 m/s; dt = 0.04 dx / U_max = 4 us; tau = 1/2 + 3 nu dt / dx^2 = 12.5.
+  EXPECT_NEAR(c.dt_s, 4.0e-6, 1e-18);
+  EXPECT_NEAR(c.collision.tau, 12.5, 1e-12);
+  EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 4.0 * 2.0, 1e-12);   // 1.25 nu_lu k with nu_lu = 4, k = 2
+  // Spin-up: max(R^2 / nu = 625 us = 156 steps, 10 tau = 125 steps).
+  EXPECT_EQ(c.spin_up_steps, 156);
+  // Cap: 6 Jeffery periods 2 pi (0.37 + 1/0.37) / gamma at r* = 0.5, gamma = 2 U_max r* / R = 400 1/s.
+  EXPECT_NEAR(c.max_time_s, 6.0 * 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37) / 400.0, 1e-12);
+}
+
+TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
+  const TubeCellConfig c = read_drag_case(0.1);
+  // At 0.04 tau would be 60.5 > max_tau = 30.5: dt = 30 dx^2 / (3 nu) = 10 us, lattice velocity 0.002 m/s x dt/dx.
+  EXPECT_NEAR(c.collision.tau, 30.5, 1e-12);
+  EXPECT_NEAR(c.dt_s, 1.0e-5, 1e-17);
+  EXPECT_NEAR(c.lattice_velocity, 0.02, 1e-12);
+  EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 10.0 * 2.0, 1e-9);
+  EXPECT_EQ(c.spin_up_steps, 305);   // 10 tau > R^2 / nu = 63 steps
+}
+
+}  // namespace
+}  // namespace hs::resolved
