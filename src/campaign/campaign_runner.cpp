@@ -25,6 +25,8 @@ namespace hs::campaign {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+/// Exit code of a run that reached its cap (max time) without meeting its settling rule.
+constexpr int kStoppedAtCap = 1;
 
 /// Starts `hemoscale run` for one record; its console goes to console.txt. The child dies with the campaign
 /// (PR_SET_PDEATHSIG), so an interrupted campaign leaves no orphan behind; the run resumes next time.
@@ -110,6 +112,7 @@ int CampaignRunner::run() {
     while (next < queue.size() && static_cast<int>(running.size()) < spec_.jobs &&
            (options_.max_runs < 0 || started < options_.max_runs)) {
       const std::size_t i = queue[next++];
+      if (runs[i].state == RunState::pending) set_aside_output(runs[i]);
       runs[i].attempts += 1;
       write_run_status(runs[i]);   // attempts.json: counts attempts across interruptions
       running[spawn_run(options_, runs[i], spec_.threads_per_job)] = {i, Clock::now()};
@@ -127,6 +130,9 @@ int CampaignRunner::run() {
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
       r.state = RunState::done;
       r.reason.clear();
+    } else if (WIFEXITED(status) && WEXITSTATUS(status) == kStoppedAtCap && std::filesystem::exists(r.summary_file())) {
+      r.state = RunState::done;   // the case file's documented cap: the summary says "settled": false
+      r.reason = "stopped at its cap before settling";
     } else if (WIFEXITED(status)) {
       r.state = RunState::failed;
       r.reason = failure_reason(r, WEXITSTATUS(status));

@@ -3,6 +3,7 @@
 #include "campaign/run_record.hpp"
 
 #include <fstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -57,6 +58,19 @@ void write_run_status(const RunRecord& record) {
   const auto file = record.state == RunState::done || record.state == RunState::failed ? record.dir / "status.json"
                                                                                         : record.dir / "attempts.json";
   common::write_file_atomic(file, j.dump(2) + "\n");
+}
+
+void set_aside_output(const RunRecord& record) {
+  const auto out = record.output_dir();
+  if (!std::filesystem::exists(out) || std::filesystem::is_empty(out)) return;
+  for (int n = 1;; ++n) {
+    auto aside = out;
+    aside += ".attempt-" + std::to_string(n);
+    if (!std::filesystem::exists(aside)) {
+      std::filesystem::rename(out, aside);
+      return;
+    }
+  }
 }
 
 }  // namespace hs::campaign

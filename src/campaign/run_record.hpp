@@ -30,4 +30,8 @@ RunRecord read_run_record(const std::filesystem::path& dir, const std::string& n
 void write_run_status(const RunRecord& record);
 std::string to_string(RunState state);
 
+/// Moves the output of an attempt that cannot be resumed (failed, or stopped before its first checkpoint) to
+/// output.attempt-N, so a fresh start never overwrites it; does nothing when there is no output yet.
+void set_aside_output(const RunRecord& record);
+
 }  // namespace hs::campaign

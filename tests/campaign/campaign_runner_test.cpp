@@ -80,6 +80,15 @@ TEST(Campaign, AFailedRunIsRecordedAndDoesNotStopTheOthers) {
   EXPECT_NE(status.output.find("1 done, 1 failed"), std::string::npos) << status.output;
   EXPECT_NE(status.output.find("Mach"), std::string::npos) << status.output;   // the reason, from the run's message
   EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").rows.size(), 1u);
+  // A retry starts afresh and keeps a failed attempt's output beside it (outputs are never overwritten). This run
+  // fails while reading its case, before it has an output folder, so one is left here as a later failure would.
+  fs::create_directories(dir / "runs" / "re-5000" / "output");
+  std::ofstream(dir / "runs" / "re-5000" / "output" / "log.txt") << "an earlier attempt\n";
+  const auto retry = run("campaign " + dir.string() + " --retry-failed");
+  EXPECT_EQ(retry.code, 1) << retry.output;
+  EXPECT_TRUE(fs::exists(dir / "runs" / "re-5000" / "output.attempt-1" / "log.txt"));
+  const auto again = run("campaign " + dir.string() + " --status");
+  EXPECT_NE(again.output.find("Mach"), std::string::npos) << again.output;
 }
 
 TEST(Campaign, BadCampaignFileIsAConfigError) {
