@@ -7,6 +7,7 @@
 #include "bench/npfem_bench.hpp"
 #include "bench/fvm_bench.hpp"
 #include "bench/regression_bench.hpp"
+#include "bench/resolved_bench.hpp"
 
 namespace hs::app {
 
@@ -18,6 +19,7 @@ std::map<std::string, TaskEntry> benchmarks() {
   r["fvm"] = {"PISO fluid on the 3D lid-driven cube vs OpenFOAM icoFoam (ns per cell-step)", hs::bench::run_fvm_bench};
   r["regression"] = {"symbolic regression: 10 Feynman equations, gplearn vs full engine; evaluator speed", hs::bench::run_regression_bench};
   r["cfddem"] = {"coupled CFD-DEM tube: s per CFD step and peak RSS for 1e4, 1e5, 1e6 RBCs", hs::bench::run_cfddem_bench};
+  r["resolved"] = {"coupled RBC in the campaign tube: s per simulated ms, LBM/IBM/membrane shares, campaign hours", hs::bench::run_resolved_bench};
   return r;
 }
 

@@ -113,6 +113,7 @@ int CampaignRunner::run() {
            (options_.max_runs < 0 || started < options_.max_runs)) {
       const std::size_t i = queue[next++];
       if (runs[i].state == RunState::pending) set_aside_output(runs[i]);
+      std::filesystem::remove(runs[i].dir / "status.json");   // a retried run is no longer "failed" in --status
       runs[i].attempts += 1;
       write_run_status(runs[i]);   // attempts.json: counts attempts across interruptions
       running[spawn_run(options_, runs[i], spec_.threads_per_job)] = {i, Clock::now()};

@@ -216,7 +216,7 @@ int run_tube_cell(const common::CaseRequest& request) {
   TubeCellRun& r = *run;
   if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
   ctx.log().info("tube-cell ({}): r* = {}, Re = {}, U_max = {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
-                 "tau = {:.3f}, peak lattice velocity {}, membrane every {} steps",
+                 "tau = {:.3f}, peak lattice velocity {:.4g}, membrane every {} steps",
                  c.setup == TubeCellSetup::drag ? "drag" : "lift", c.radial_position, c.reynolds, c.u_max_m_s,
                  r.nodes[0], r.nodes[1], r.nodes[2], c.dx_m, c.dt_s, c.collision.tau, c.lattice_velocity,
                  c.membrane_every);

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale bench resolved`: the shipped tube-drag case (r* = 0.5, Re = 0.5, dx = 1 um, one thread as in the
+// campaign) run for a fixed number of steps, three times: wall seconds per simulated millisecond, ms per lattice step
+// and the shares of LBM / IBM / membrane from the run's own stage timings (medians). The campaign projection sums,
+// over the 60 runs of cases/campaign/tube-re-rstar, the lattice steps each needs (its dt and Jeffery period come from
+// the same reader the runs use) at the measured cost per step, divided by the campaign's concurrent jobs.
+#include <omp.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "bench/resolved_bench.hpp"
+#include "common/config/config_file.hpp"
+#include "common/run_folder.hpp"
+#include "resolved/cases/tube_cell.hpp"
+#include "resolved/cases/tube_cell_config.hpp"
+
+namespace hs::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The campaign grid and its stopping rule (cases/campaign/tube-re-rstar/campaign.toml, tube-drag/case.toml).
+constexpr std::array kReynolds{0.1, 0.2, 0.3, 0.4, 0.5};
+constexpr std::array kRadialPositions{0.2, 0.3, 0.4, 0.5, 0.6, 0.7};
+constexpr int kSetups = 2;          // drag and lift
+constexpr int kCampaignJobs = 2;    // runs at once, one thread each
+constexpr double kExpectedPeriods = 4.0;   // settling rule: 3 agreeing periods after ~1 period of transient
+
+std::string shipped_case_text() {
+  std::ifstream in(fs::path(HS_CASES_DIR) / "resolved/tube-drag/case.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  if (pos == std::string::npos) throw std::runtime_error("bench resolved: '" + from + "' not in tube-drag/case.toml");
+  return text.replace(pos, from.size(), to);
+}
+
+hs::resolved::TubeCellConfig grid_point(double reynolds, double r_star) {
+  std::string text = with(shipped_case_text(), "reynolds = 0.5 ", fmt::format("reynolds = {} ", reynolds));
+  text = with(text, "radial_position = 0.5 ", fmt::format("radial_position = {} ", r_star));
+  auto file = common::ConfigFile::parse(text, "tube-drag/case.toml");
+  (void)file->root().section("case").string("type");
+  return hs::resolved::read_tube_cell(*file, false);
+}
+
+/// Lattice steps of the whole campaign when every run goes `periods` Jeffery periods (capped by its own limit).
+double campaign_steps(double periods) {
+  double steps = 0.0;
+  for (double re : kReynolds) {
+    for (double r : kRadialPositions) {
+      const auto c = grid_point(re, r);
+      steps += kSetups * std::min(periods * hs::resolved::jeffery_period_s(c), c.max_time_s) / c.dt_s;
+    }
+  }
+  return steps;
+}
+
+struct Sample {
+  double s_per_sim_ms;
+  double ms_per_step;
+  double lbm_share, ibm_share, membrane_share;
+};
+
+Sample run_once(const fs::path& dir, double max_time_s) {
+  const std::string text = with(shipped_case_text(), "max_jeffery_periods = 6 ", fmt::format("max_time_s = {} ", max_time_s));
+  auto file = common::ConfigFile::parse(with(text, "vtk_every_s = 0.05 ", "vtk_every_s = 0.0 "), "tube-drag/case.toml");
+  (void)file->root().section("case").string("type");
+  fs::remove_all(dir / "out");
+  const common::CaseRequest request{.case_dir = dir, .config = file.get(), .output_dir = dir / "out", .quiet = true};
+  (void)hs::resolved::run_tube_cell(request);
+  std::ifstream in(dir / "out" / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  const auto& t = summary.at("stage_timings");
+  double total = 0.0;
+  for (const auto& [name, stage] : t.items()) total += stage.at("seconds").get<double>();
+  auto share = [&](std::initializer_list<const char*> names) {
+    double s = 0.0;
+    for (const char* n : names) s += t.contains(n) ? t.at(n).at("seconds").get<double>() : 0.0;
+    return s / total;
+  };
+  return {summary.at("wall_s_per_simulated_ms").get<double>(), 1e3 * total / summary.at("steps").get<double>(),
+          share({"lbm_stream_collide", "halo_exchange", "lbm_boundaries", "body_force_ramp"}),
+          share({"ibm_forcing", "markers_advect", "force_accumulate"}), share({"membrane_solve"})};
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+int run_resolved_bench(const hs::common::TaskOptions& options) {
+  omp_set_num_threads(1);   // one thread per run, as the campaign runs them (threads_per_job = 1)
+  const auto dir = fs::temp_directory_path() / "hs_bench_resolved";
+  fs::create_directories(dir);
+  // 2 ms at Re 0.5 = 500 lattice steps (250 membrane steps) past the 156-step spin-up; --quick: 100 steps.
+  const double max_time_s = options.quick ? 4e-4 : 2e-3;
+  std::vector<Sample> samples;
+  for (int rep = 0; rep < 3; ++rep) samples.push_back(run_once(dir, max_time_s));
+  auto pick = [&](double Sample::*field) {
+    std::vector<double> v;
+    for (const auto& s : samples) v.push_back(s.*field);
+    return median(v);
+  };
+  const double ms_per_step = pick(&Sample::ms_per_step);
+  const double hours_cap = campaign_steps(6.0) * ms_per_step / 3.6e6 / kCampaignJobs;
+  const double hours_expected = campaign_steps(kExpectedPeriods) * ms_per_step / 3.6e6 / kCampaignJobs;
+  fmt::print("resolved tube-drag (r* 0.5, Re 0.5, dx 1 um, 1 thread): {:.3f} s per simulated ms, {:.2f} ms per step "
+             "(LBM {:.0f} %, IBM {:.0f} %, membrane {:.0f} %)\n",
+             pick(&Sample::s_per_sim_ms), ms_per_step, 100 * pick(&Sample::lbm_share), 100 * pick(&Sample::ibm_share),
+             100 * pick(&Sample::membrane_share));
+  fmt::print("campaign (60 runs, {} at once): {:.1f} h if every run goes {} Jeffery periods, {:.1f} h at the 6-period cap\n",
+             kCampaignJobs, hours_expected, kExpectedPeriods, hours_cap);
+  nlohmann::json out = {{"benchmark", "resolved"},
+                        {"s_per_sim_ms", pick(&Sample::s_per_sim_ms)},
+                        {"ms_per_step", ms_per_step},
+                        {"lbm_share", pick(&Sample::lbm_share)},
+                        {"ibm_share", pick(&Sample::ibm_share)},
+                        {"membrane_share", pick(&Sample::membrane_share)},
+                        {"campaign_hours_projected", hours_expected},
+                        {"campaign_hours_at_cap", hours_cap},
+                        {"expected_periods_per_run", kExpectedPeriods},
+                        {"repetitions", 3}};
+  out["provenance"] = hs::common::provenance();
+  if (options.json_file) hs::common::write_json(*options.json_file, out);
+  return 0;
+}
+
+}  // namespace hs::bench
