@@ -1,0 +1,48 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+# Cd and DI vs time of one tube-cell run, with the averaging window's periods marked (the seed paper's Fig. 10).
+# Usage: /usr/bin/python3 tools/plot_tube_cell.py RUN_DIR [OUT.png]   (RUN_DIR holds timeseries.csv, summary.json)
+import csv
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main():
+    run = sys.argv[1]
+    out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(run, "cd_di.png")
+    with open(os.path.join(run, "timeseries.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(run, "summary.json")) as f:
+        summary = json.load(f)
+    res = summary["results"]
+    periods = int(res.get("periods_averaged", 0))
+    period_ms = 1e3 * float(res.get("period_s", 0.0) or 0.0)
+    what = "period average" if periods > 0 else "mean (no whole period detected)"
+    t_ms = [1e3 * float(r["time_s"]) for r in rows]
+    fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
+    for ax, key, mean_key, label in ((axes[0], "cd", "cd_mean", "C_d"), (axes[1], "di", "di_mean", "DI")):
+        ax.plot(t_ms, [float(r[key]) for r in rows], color="tab:blue", lw=1)
+        ax.axhline(res[mean_key], color="k", ls="--", lw=1, label=f"{what} {res[mean_key]:.4g}")
+        ax.set_ylabel(label)
+        ax.legend(loc="best", fontsize=8)
+    if periods > 0 and period_ms > 0:   # the window averaged: the last `periods` whole periods
+        for k in range(periods + 1):
+            for ax in axes:
+                ax.axvline(t_ms[-1] - k * period_ms, color="tab:red", lw=0.8, alpha=0.6)
+    axes[1].set_xlabel("time (ms)")
+    setup = summary.get("setup", "")
+    axes[0].set_title(f"{setup}: Re = {res['reynolds']:.3g}, r* = {res['r_star_nominal']:.2g}, "
+                      f"{res['flow_mode']}, {periods} periods of {period_ms:.3g} ms (red)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    print(out)
+
+
+if __name__ == "__main__":
+    main()
