@@ -32,9 +32,9 @@ int write_dataset(const CampaignSpec& spec, const std::vector<RunRecord>& runs) 
   std::vector<std::string> row_keys;
   std::map<std::string, std::vector<std::pair<const GridPoint*, const RunRecord*>>> rows;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    std::string key;
-    for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-      for (const auto& r : spec.row_axes) {
+    std::string key;   // in the order of row_axes, as the header
+    for (const auto& r : spec.row_axes) {
+      for (std::size_t a = 0; a < spec.axes.size(); ++a) {
         if (spec.axes[a].name == r) key += to_text(points[i].values[a]) + ",";
       }
     }

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "campaign/campaign_spec.hpp"
@@ -89,6 +90,25 @@ TEST(Campaign, AFailedRunIsRecordedAndDoesNotStopTheOthers) {
   EXPECT_TRUE(fs::exists(dir / "runs" / "re-5000" / "output.attempt-1" / "log.txt"));
   const auto again = run("campaign " + dir.string() + " --status");
   EXPECT_NE(again.output.find("Mach"), std::string::npos) << again.output;
+}
+
+TEST(Campaign, RowValuesFollowTheHeaderOrder) {
+  // Axes are stored by name (a_tau before re); the dataset's row axes are listed as "re, a_tau".
+  const auto dir = make_campaign("order", "[0.1]");
+  std::string text;
+  {
+    std::ifstream in(dir / "campaign.toml");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string from = "row_axes = \"re\"";
+  text.replace(text.find(from), from.size(), "row_axes = \"re, a_tau\"");
+  text += "[grid.a_tau]\nkey = \"numerics.tau\"\nvalues = [2.5]\n";
+  std::ofstream(dir / "campaign.toml") << text;
+  ASSERT_EQ(run("campaign " + dir.string()).code, 0);
+  const auto table = hs::common::read_csv(dir / "dataset.csv");
+  ASSERT_EQ(table.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(table.column("re")[0], 0.1);
+  EXPECT_DOUBLE_EQ(table.column("a_tau")[0], 2.5);
 }
 
 TEST(Campaign, BadCampaignFileIsAConfigError) {
