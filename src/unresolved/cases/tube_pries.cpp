@@ -211,6 +211,29 @@ TubePriesState read_tube_checkpoint(CfdDemCoupling& coupling, const TubePriesRes
   return st;
 }
 
+/// Means over the last (1 - from_fraction) of the series, and Ht_d of that window's two halves (steadiness).
+struct SeriesAverages {
+  double q_blood_m3_s, q_rbc_m3_s, ht_d_first_half, ht_d_second_half;
+  long samples;
+};
+
+SeriesAverages average_series(const std::vector<TubePriesSample>& series, double from_fraction) {
+  const long total = static_cast<long>(series.size());
+  const long first = static_cast<long>(from_fraction * static_cast<double>(total));
+  double sum_blood = 0.0, sum_rbc = 0.0;
+  std::array<double, 2> half_rbc{}, half_blood{};
+  for (long s = first; s < total; ++s) {
+    const TubePriesSample& x = series[static_cast<std::size_t>(s)];
+    sum_blood += x.q_blood_m3_s;
+    sum_rbc += x.q_rbc_m3_s;
+    const std::size_t half = 2 * (s - first) < total - first ? 0 : 1;
+    half_rbc[half] += x.q_rbc_m3_s;
+    half_blood[half] += x.q_blood_m3_s;
+  }
+  const double n = static_cast<double>(total - first);
+  return {sum_blood / n, sum_rbc / n, half_rbc[0] / half_blood[0], half_rbc[1] / half_blood[1], total - first};
+}
+
 }  // namespace
 
 TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::function<void(const TubePriesSample&)>& observe,
@@ -250,25 +273,13 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
     if (!restart.dir.empty() && schedule.due()) write_tube_checkpoint(coupling, st, restart);
   }
   if (!restart.dir.empty()) write_tube_checkpoint(coupling, st, restart);
-  // Averages over the last (1 - average_from_fraction) of the series (all of it: a resumed run continued).
+  const SeriesAverages avg = average_series(st.series, c.average_from_fraction);
+  const double q_blood = avg.q_blood_m3_s;
+  const double q_rbc = avg.q_rbc_m3_s;
+  const double ht_first = avg.ht_d_first_half;
+  const double ht_second = avg.ht_d_second_half;
+  const long n_avg = avg.samples;
   const long total = static_cast<long>(st.series.size());
-  const long first_avg = static_cast<long>(c.average_from_fraction * static_cast<double>(total));
-  double sum_q_blood = 0.0, sum_q_rbc = 0.0;
-  std::array<double, 2> quarter_rbc{}, quarter_blood{};
-  long n_avg = 0;
-  for (long s = first_avg; s < total; ++s) {
-    const TubePriesSample& x = st.series[static_cast<std::size_t>(s)];
-    sum_q_blood += x.q_blood_m3_s;
-    sum_q_rbc += x.q_rbc_m3_s;
-    const std::size_t half = 2 * (s - first_avg) < total - first_avg ? 0 : 1;
-    quarter_rbc[half] += x.q_rbc_m3_s;
-    quarter_blood[half] += x.q_blood_m3_s;
-    ++n_avg;
-  }
-  const double q_blood = sum_q_blood / static_cast<double>(n_avg);
-  const double q_rbc = sum_q_rbc / static_cast<double>(n_avg);
-  const double ht_first = quarter_rbc[0] / quarter_blood[0];
-  const double ht_second = quarter_rbc[1] / quarter_blood[1];
   const double ht_achieved = st.ht_achieved;
   const double d_um = c.diameter_m * 1e6;
   TubePriesResult res;
