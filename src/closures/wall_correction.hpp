@@ -13,7 +13,7 @@ namespace hs::closures {
 ///                   at infinity (Haberman & Sayre 1958, David Taylor Model Basin Rep. 1143; Happel & Brenner,
 ///                   Low Reynolds number hydrodynamics, 1965, sec. 7-4). Every particle gets the on-axis value: the
 ///                   off-axis factor is larger (it diverges at contact with the wall), so this is a lower bound away
-///                   from the axis; at RBC confinement (lambda 0.06-0.19 for D = 30-100 um) K = 1.15-1.6.
+///                   from the axis; at RBC confinement (lambda 0.056-0.19 for D = 100-30 um) K = 1.13-1.62.
 enum class WallCorrection { none, haberman_sayre };
 
 /// Largest lambda accepted: up to 0.6 the Haberman-Sayre formula agrees with Bohlin's (1960) series within 4.2%
