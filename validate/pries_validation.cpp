@@ -81,20 +81,24 @@ fs::path output_dir(const hs::common::TaskOptions& options) {
 
 }  // namespace
 
-int validate_pries(const hs::common::TaskOptions& options) {
+namespace {
+
+int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCorrection wall, const std::string& stem) {
   const fs::path dir = output_dir(options);
-  const fs::path csv_path = dir / "pries_validation.csv";
+  const fs::path csv_path = dir / (stem + ".csv");
   std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
                                        "mu_rel_error_pct", "rbc_count", "steady"});
   nlohmann::json result = {{"validation", "pries"},
                            {"reference", "Pries, Neuhaus & Gaehtgens 1992, Am J Physiol 263:H1770 (in vitro, high shear)"},
                            {"closures", options.extra.empty() ? "schiller_naumann (rigid-sphere baseline)" : options.extra},
+                           {"wall_correction", hs::closures::wall_correction_name(wall)},
                            {"quick", options.quick}};
   double max_error = 0.0;
   for (const double d_um : {30.0, 50.0, 100.0}) {
     for (const double ht : {0.05, 0.10, 0.15}) {
-      const TubePriesConfig c = config_for(d_um, ht, options.quick, options.extra);
+      TubePriesConfig c = config_for(d_um, ht, options.quick, options.extra);
+      c.wall_correction = wall;
       const TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
       const double err = std::max(std::abs(r.ht_d_error_pct), std::abs(r.mu_rel_error_pct));
       max_error = std::max(max_error, err);
@@ -112,13 +116,23 @@ int validate_pries(const hs::common::TaskOptions& options) {
   result["max_error_pct"] = max_error;
   result["provenance"] = hs::common::provenance();
   csv.reset();   // closes the file before the plot reads it
-  const fs::path png = dir / "pries_validation.png";
+  const fs::path png = dir / (stem + ".png");
   const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}'", (fs::path(HS_SOURCE_DIR) / "tools/plot_pries.py").string(),
                                       csv_path.string(), png.string());
   result["plot"] = std::system(cmd.c_str()) == 0 ? png.string() : "";
-  hs::common::write_json(options.json_file ? *options.json_file : dir / "pries_validation.json", result);
+  hs::common::write_json(options.json_file ? *options.json_file : dir / (stem + ".json"), result);
   fmt::print("pries: max error {:.1f}% (table {}, plot {})\n", max_error, csv_path.string(), png.string());
   return 0;
+}
+
+}  // namespace
+
+int validate_pries(const hs::common::TaskOptions& options) {
+  return run_pries_table(options, hs::closures::WallCorrection::none, "pries_validation");
+}
+
+int validate_pries_wall(const hs::common::TaskOptions& options) {
+  return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre, "pries_wall_validation");
 }
 
 }  // namespace hs::unresolved

@@ -11,5 +11,8 @@ namespace hs::unresolved {
 /// folder, the learned set DIR/{drag_coefficient,lift_coefficient,deformation_index}/*.toml. Returns 0 when
 /// every case ran (the errors are reported, not judged: the rigid-sphere baseline is not expected to pass).
 int validate_pries(const hs::common::TaskOptions& options);
+/// The same table with the Haberman-Sayre confinement factor on the drag ([coupling] wall_correction), written as
+/// pries_wall_validation.csv/.json/.png.
+int validate_pries_wall(const hs::common::TaskOptions& options);
 
 }  // namespace hs::unresolved

@@ -14,6 +14,7 @@
 #include "common/dimensionless_groups.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
+#include "common/io/checkpoint.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
@@ -77,12 +78,20 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   c.lift = closure_key("lift", "none", hs::closures::make_lift_closure);
   c.deformation = closure_key("deformation", "none", hs::closures::make_deformation_closure);
   if (c.drag.model == "none") coupling.fail("drag", "a drag closure is required (a name or a closure file)");
+  // Default "none" keeps the closures' unbounded-sphere drag; "haberman_sayre" multiplies it by the on-axis
+  // confinement factor K(d_p / D) (closures/wall_correction.hpp).
+  try {
+    c.wall_correction = hs::closures::wall_correction_from_name(coupling.string_or("wall_correction", "none"));
+  } catch (const hs::common::ConfigError& e) {
+    coupling.fail("wall_correction", e.what());
+  }
   c.cells_across = static_cast<int>(numerics.integer_in("cells_across_diameter", 4, 1000));
   c.dt_s = numerics.positive("dt_s");
   c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
   c.end_time_s = numerics.positive("end_time_s");
   c.average_from_fraction = numerics.number_in_or("average_from_fraction", 0.0, 0.95, 0.5);
   c.steady_tolerance = numerics.positive_or("steady_tolerance", 0.02);   // 2%: below the 5% acceptance band
+  c.checkpoint_every_wall_s = numerics.positive_or("checkpoint_every_wall_s", 600.0);   // DESIGN.md: every N minutes
   const double dx = c.diameter_m / c.cells_across;
   const double along = c.length_m / dx;
   if (std::abs(along - std::round(along)) > 1e-6 * along) {
@@ -101,6 +110,13 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
                                             "{:.4g} s; use n_coupling >= {}", dt_dem, limit, static_cast<long>(std::ceil(c.dt_s / limit))));
   }
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
+  if (c.wall_correction != hs::closures::WallCorrection::none) {
+    try {
+      (void)hs::closures::wall_correction_factor(c.wall_correction, c.particles.diameter_m, c.diameter_m);
+    } catch (const hs::common::ConfigError& e) {
+      coupling.fail("wall_correction", e.what());
+    }
+  }
   file.finish();
   return c;
 }
@@ -148,45 +164,123 @@ double rbc_flow_rate(const DemSystem& dem, double length_m) {
 
 }  // namespace
 
-TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::function<void(const TubePriesSample&)>& observe) {
+namespace {
+
+constexpr std::size_t kSampleValues = 5;   // the fields of TubePriesSample
+
+/// Everything the coupled run carries from step to step besides the solvers: the insertion result and the samples.
+struct TubePriesState {
+  double ht_achieved = 0.0;
+  double rbc_count = 0.0;
+  std::vector<TubePriesSample> series;
+};
+
+void write_tube_checkpoint(const CfdDemCoupling& coupling, const TubePriesState& st, const TubePriesRestart& restart) {
+  hs::common::Checkpoint cp;
+  coupling.write_state(cp);
+  std::vector<double> series;
+  for (const TubePriesSample& s : st.series) {
+    series.insert(series.end(), {s.time_s, s.q_blood_m3_s, s.q_rbc_m3_s, s.ht_d, s.pressure_iterations});
+  }
+  cp.put("series", series);
+  const std::vector<double> insertion{st.ht_achieved, st.rbc_count};
+  cp.put("insertion", insertion);
+  cp.meta()["case_type"] = "tube-pries";
+  cp.meta()["step"] = coupling.steps();
+  cp.write(restart.dir, restart.rank);
+}
+
+TubePriesState read_tube_checkpoint(CfdDemCoupling& coupling, const TubePriesRestart& restart) {
+  const hs::common::Checkpoint cp = hs::common::Checkpoint::read(restart.dir, restart.rank);
+  if (cp.meta().value("case_type", "") != "tube-pries") {
+    throw hs::common::ConfigError(fmt::format("{}: not a tube-pries checkpoint", restart.dir.string()));
+  }
+  coupling.read_state(cp);
+  TubePriesState st;
+  const std::vector<double>& series = cp.doubles("series");
+  const std::vector<double>& insertion = cp.doubles("insertion");
+  if (series.size() != kSampleValues * static_cast<std::size_t>(coupling.steps()) || insertion.size() != 2) {
+    throw hs::common::ConfigError(fmt::format("{}: checkpoint series of {} values for {} steps", restart.dir.string(),
+                                              series.size(), coupling.steps()));
+  }
+  for (std::size_t k = 0; k < series.size(); k += kSampleValues) {
+    st.series.push_back({series[k], series[k + 1], series[k + 2], series[k + 3], series[k + 4]});
+  }
+  st.ht_achieved = insertion[0];
+  st.rbc_count = insertion[1];
+  return st;
+}
+
+/// Means over the last (1 - from_fraction) of the series, and Ht_d of that window's two halves (steadiness).
+struct SeriesAverages {
+  double q_blood_m3_s, q_rbc_m3_s, ht_d_first_half, ht_d_second_half;
+  long samples;
+};
+
+SeriesAverages average_series(const std::vector<TubePriesSample>& series, double from_fraction) {
+  const long total = static_cast<long>(series.size());
+  const long first = static_cast<long>(from_fraction * static_cast<double>(total));
+  double sum_blood = 0.0, sum_rbc = 0.0;
+  std::array<double, 2> half_rbc{}, half_blood{};
+  for (long s = first; s < total; ++s) {
+    const TubePriesSample& x = series[static_cast<std::size_t>(s)];
+    sum_blood += x.q_blood_m3_s;
+    sum_rbc += x.q_rbc_m3_s;
+    const std::size_t half = 2 * (s - first) < total - first ? 0 : 1;
+    half_rbc[half] += x.q_rbc_m3_s;
+    half_blood[half] += x.q_blood_m3_s;
+  }
+  const double n = static_cast<double>(total - first);
+  return {sum_blood / n, sum_rbc / n, half_rbc[0] / half_blood[0], half_rbc[1] / half_blood[1], total - first};
+}
+
+}  // namespace
+
+TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::function<void(const TubePriesSample&)>& observe,
+                                    const TubePriesRestart& restart) {
   const Tube3 tube(c);
   const double r_tube = 0.5 * c.diameter_m;
   const Domain dem_domain{.box = {{-r_tube, -r_tube, 0.0}, {r_tube, r_tube, c.length_m}}, .periodic = {false, false, true}};
-  const InsertionResult inserted = insert_at_volume_fraction(
-      tube.shape, dem_domain, {.volume_fraction = c.tube_hematocrit, .radius_m = c.particles.radius_m(), .seed = c.seed, .key = "tube_hematocrit"});
   DemSystem dem({.params = c.particles, .domain = dem_domain, .time_step_s = c.dt_s / c.n_coupling}, &tube.shape);
   FvmSolver fluid(tube.grid, c.fluid, {.dt_s = c.dt_s}, drive_of(c));
   const double q_plasma = plasma_flow_rate(c, tube.grid);
   const double u_plasma = q_plasma / (std::numbers::pi * r_tube * r_tube);
-  // Fluid and cells start at rest: the slip stays in the closures' range (u_r+ < 0) while the flow develops.
-  for (const Vec3& x : inserted.positions_m) dem.add_particle(x);
   CfdDemCoupling coupling(fluid, dem,
-                          {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0}, .tube_radius_m = r_tube},
+                          {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0},
+                           .tube_radius_m = r_tube, .wall_correction = c.wall_correction},
                           make_closures(c));
-  coupling.set_mean_velocity_m_s(u_plasma);
+  TubePriesState st;
+  if (restart.resume) {
+    st = read_tube_checkpoint(coupling, restart);   // restores the mean velocity the saved run used for u_r+ too
+    for (const TubePriesSample& s : st.series) observe(s);
+  } else {
+    const InsertionResult inserted = insert_at_volume_fraction(
+        tube.shape, dem_domain, {.volume_fraction = c.tube_hematocrit, .radius_m = c.particles.radius_m(), .seed = c.seed, .key = "tube_hematocrit"});
+    // Fluid and cells start at rest: the slip stays in the closures' range (u_r+ < 0) while the flow develops.
+    for (const Vec3& x : inserted.positions_m) dem.add_particle(x);
+    st.ht_achieved = inserted.achieved_fraction;
+    st.rbc_count = static_cast<double>(inserted.positions_m.size());
+    coupling.set_mean_velocity_m_s(u_plasma);
+  }
   const long steps = std::max(1L, std::lround(c.end_time_s / c.dt_s));
-  const long first_avg = static_cast<long>(c.average_from_fraction * static_cast<double>(steps));
-  double sum_q_blood = 0.0, sum_q_rbc = 0.0;
-  std::array<double, 2> quarter_rbc{}, quarter_blood{};
-  long n_avg = 0;
-  for (long s = 0; s < steps; ++s) {
+  hs::common::CheckpointSchedule schedule(c.checkpoint_every_wall_s);
+  while (coupling.steps() < steps) {
     coupling.step();
     const double q_rbc = rbc_flow_rate(dem, c.length_m);
     const double q_blood = fluid.flow_rate_m3_s(2) + q_rbc;
-    observe({fluid.time_s(), q_blood, q_rbc, q_rbc / q_blood, static_cast<double>(fluid.last_stats().pressure_iterations)});
-    if (s < first_avg) continue;
-    sum_q_blood += q_blood;
-    sum_q_rbc += q_rbc;
-    const std::size_t half = 2 * (s - first_avg) < steps - first_avg ? 0 : 1;
-    quarter_rbc[half] += q_rbc;
-    quarter_blood[half] += q_blood;
-    ++n_avg;
+    st.series.push_back({fluid.time_s(), q_blood, q_rbc, q_rbc / q_blood, static_cast<double>(fluid.last_stats().pressure_iterations)});
+    observe(st.series.back());
+    if (!restart.dir.empty() && schedule.due()) write_tube_checkpoint(coupling, st, restart);
   }
-  const double q_blood = sum_q_blood / static_cast<double>(n_avg);
-  const double q_rbc = sum_q_rbc / static_cast<double>(n_avg);
-  const double ht_first = quarter_rbc[0] / quarter_blood[0];
-  const double ht_second = quarter_rbc[1] / quarter_blood[1];
-  const double ht_achieved = inserted.achieved_fraction;
+  if (!restart.dir.empty()) write_tube_checkpoint(coupling, st, restart);
+  const SeriesAverages avg = average_series(st.series, c.average_from_fraction);
+  const double q_blood = avg.q_blood_m3_s;
+  const double q_rbc = avg.q_rbc_m3_s;
+  const double ht_first = avg.ht_d_first_half;
+  const double ht_second = avg.ht_d_second_half;
+  const long n_avg = avg.samples;
+  const long total = static_cast<long>(st.series.size());
+  const double ht_achieved = st.ht_achieved;
   const double d_um = c.diameter_m * 1e6;
   TubePriesResult res;
   res.ht_d = q_rbc / q_blood;
@@ -202,7 +296,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   j["diameter_um"] = d_um;
   j["tube_hematocrit_requested"] = c.tube_hematocrit;
   j["tube_hematocrit"] = ht_achieved;
-  j["rbc_count"] = inserted.positions_m.size();
+  j["rbc_count"] = static_cast<long>(st.rbc_count);
   j["discharge_hematocrit"] = res.ht_d;
   j["relative_apparent_viscosity"] = res.mu_rel;
   j["pries_discharge_hematocrit"] = res.ht_d_pries;
@@ -215,11 +309,12 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   j["steady"] = std::abs(ht_second - ht_first) <= c.steady_tolerance * std::abs(ht_second);
   j["ht_d_change_between_averaging_halves"] = ht_second - ht_first;
   j["averaged_steps"] = n_avg;
-  j["cfd_steps"] = steps;
+  j["cfd_steps"] = total;
   j["lost_solid_volume_m3"] = coupling.exchange().lost_solid_volume_m3;
   j["drag"] = c.drag.model == "expression" ? c.drag.file.string() : c.drag.model;
   j["lift"] = c.lift.model == "expression" ? c.lift.file.string() : c.lift.model;
   j["deformation"] = c.deformation.model == "expression" ? c.deformation.file.string() : c.deformation.model;
+  j["wall_correction"] = hs::closures::wall_correction_name(c.wall_correction);
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c.fluid.density_kg_m3, c.diameter_m, 2.0 * u_blood, mu)},
                  {"wall_gamma_plus", hs::common::shear_rate_plus(wall_shear_rate, r_tube, c.fluid.kinematic_viscosity_m2_s)},
                  {"confinement_d_over_D", c.particles.diameter_m / c.diameter_m},

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "closures/closure_registry.hpp"
+#include "closures/wall_correction.hpp"
 #include "common/case_request.hpp"
 #include "unresolved/dem/particle_params.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
@@ -30,6 +32,8 @@ struct TubePriesConfig {
   double steady_tolerance = 0.02;        // steady when the two last quarters' mean Ht_d differ by less
   bool void_fraction_rate = false;       // d(eps)/dt source (see CouplingSettings::void_fraction_rate)
   hs::closures::ClosureSpec drag{}, lift{}, deformation{};   // model "none": no lift / DI = 0
+  hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;   // confinement factor on the drag
+  double checkpoint_every_wall_s = 600.0;   // wall-clock interval between restart files (and one at the end)
   std::uint64_t seed = 1;
 };
 
@@ -55,10 +59,22 @@ struct TubePriesSample {
   double time_s, q_blood_m3_s, q_rbc_m3_s, ht_d, pressure_iterations;
 };
 
+/// Where and whether the coupled run keeps restart files (common::Checkpoint, one per rank, replaced atomically):
+/// fluid fields, particles with their contact springs, coupling state, insertion result and the samples so far.
+struct TubePriesRestart {
+  std::filesystem::path dir;   // checkpoint folder; empty: no checkpoints
+  bool resume = false;         // continue from the checkpoint in dir
+  int rank = 0;
+};
+
 /// Runs the plasma-only reference and the coupled tube; throws ConfigError for inputs found bad on the way
-/// (insertion impossible, particles outside the tube, DEM step).
+/// (insertion impossible, particles outside the tube, DEM step, a checkpoint of another case). With restart.dir a
+/// checkpoint is written every c.checkpoint_every_wall_s and at the end; with restart.resume the run continues
+/// from it up to c.end_time_s (which may be later than the saved run's): the samples before the checkpoint are
+/// handed to `observe` again first, and Ht_d and Q are averaged over the whole series as if never stopped.
 [[nodiscard]] TubePriesResult simulate_tube_pries(const TubePriesConfig& c,
-                                                  const std::function<void(const TubePriesSample&)>& observe);
+                                                  const std::function<void(const TubePriesSample&)>& observe,
+                                                  const TubePriesRestart& restart = {});
 
 /// `hemoscale run` entry: returns 0 after a completed run (the comparison is reported, not judged).
 int run_tube_pries(const hs::common::CaseRequest& request);

@@ -16,17 +16,22 @@ int run_tube_pries(const hs::common::CaseRequest& request) {
   hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-pries");
   hs::common::Log& log = ctx.log();
   log.set_quiet(request.quiet);
-  log.info("tube-pries: D = {:.4g} m, L = {:.4g} m, Ht_c = {:.3g}, {} cells across, dt = {:.4g} s, n_coupling = {}", c.diameter_m,
-           c.length_m, c.tube_hematocrit, c.cells_across, c.dt_s, c.n_coupling);
+  log.info("tube-pries: D = {:.4g} m, L = {:.4g} m, Ht_c = {:.3g}, {} cells across, dt = {:.4g} s, n_coupling = {}, wall correction {}",
+           c.diameter_m, c.length_m, c.tube_hematocrit, c.cells_across, c.dt_s, c.n_coupling,
+           hs::closures::wall_correction_name(c.wall_correction));
   hs::common::CsvWriter series(ctx.folder().file("timeseries.csv"),
                                {"time_s", "flow_rate_blood_m3_s", "flow_rate_rbc_m3_s", "discharge_hematocrit", "pressure_iterations"});
   const long steps = std::max(1L, std::lround(c.end_time_s / c.dt_s));
   hs::common::Progress progress("tube-pries", steps, ctx.show_progress());
   long done = 0;
+  // Checkpoints every checkpoint_every_wall_s and at the end; --resume replays the saved samples into a fresh
+  // timeseries.csv, then continues (tube_cell.cpp's pattern).
+  const TubePriesRestart restart{.dir = ctx.folder().checkpoint_dir(), .resume = ctx.resuming(), .rank = ctx.rank()};
+  if (ctx.resuming()) log.info("resuming from the checkpoint in {}", restart.dir.string());
   const TubePriesResult r = simulate_tube_pries(c, [&](const TubePriesSample& s) {
     series.row({s.time_s, s.q_blood_m3_s, s.q_rbc_m3_s, s.ht_d, s.pressure_iterations});
     progress.update(++done);
-  });
+  }, restart);
   progress.finish();
   ctx.write_summary(r.summary);
   log.info("Ht_d = {:.4f} (Pries {:.4f}, {:+.1f}%), mu_rel = {:.4f} (Pries {:.4f}, {:+.1f}%); outputs in {}", r.ht_d, r.ht_d_pries,

@@ -108,7 +108,8 @@ void CfdDemCoupling::particle_forces() {
     di[i] = in.di;
     const double d = 2.0 * p.radius_m()[i];
     const double vp = std::numbers::pi / 6.0 * d * d * d;
-    beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in);
+    const double k_wall = hs::closures::wall_correction_factor(settings_.wall_correction, d, 2.0 * settings_.tube_radius_m);
+    beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in) * k_wall;
     if (!(beta[i] >= 0.0) || !std::isfinite(beta[i])) {
       throw hs::common::NumericalError(fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
                                                    "gamma+ = {:.4g}, u_r+ = {:.4g}): a drag coefficient must be finite and >= 0",
@@ -164,7 +165,7 @@ void CfdDemCoupling::fill_fields() {
     if (weight[c] > 0.0) us[c] = us[c] / weight[c];
   }
   fill_ghosts(fluid_.grid(), us);
-  if (refresh && settings_.fluid_drag == FluidDrag::implicit) {
+  if (refresh && settings_.fluid_drag == FluidDrag::implicit && settings_.two_way) {
     fluid_.implicit_coefficient_kg_m3_s() = ksl;
   }
   if (refresh) fluid_.coupling_fields_changed();
@@ -219,11 +220,11 @@ void CfdDemCoupling::step() {
   for (auto& col : p.drag_impulse_N_s()) std::fill(col.begin(), col.end(), 0.0);
   for (int s = 0; s < settings_.n_coupling; ++s) dem_.step();
   fill_fields();
-  exchange_drag();
+  if (settings_.two_way) exchange_drag();
   fill_ghosts(fluid_.grid(), fluid_.explicit_force_density_N_m3());
   fluid_.step();
   stats_.received_by_fluid_N_s = received_by_fluid_N_s();
-  stats_.pending_N_s += stats_.received_by_fluid_N_s + stats_.drag_impulse_particles_N_s;
+  if (settings_.two_way) stats_.pending_N_s += stats_.received_by_fluid_N_s + stats_.drag_impulse_particles_N_s;
   ++steps_;
   particle_forces();
 }

@@ -8,6 +8,7 @@
 #include "closures/deformation_closure.hpp"
 #include "closures/drag_closure.hpp"
 #include "closures/lift_closure.hpp"
+#include "closures/wall_correction.hpp"
 #include "common/vec3.hpp"
 #include "unresolved/coupling/divided_void_fraction.hpp"
 #include "unresolved/dem/dem_system.hpp"
@@ -29,6 +30,10 @@ struct CouplingSettings {
   int refresh_every = 1;              // CFD steps between rebuilds of the eps/Ksl pressure matrix
   FluidDrag fluid_drag = FluidDrag::implicit;
   bool void_fraction_feedback = true; // false: the fluid keeps eps = 1 (dilute limit, conservation tests)
+  // false: one-way coupling, the fluid receives neither the drag nor the lift reaction (Ksl = 0, no explicit
+  // source): the particles see the undisturbed flow. For verification of the drag law (sphere_in_tube_drag_test)
+  // and the dilute limit; two-way is the model.
+  bool two_way = true;
   // d(eps)/dt as the pressure equation's volume source. Without smoothing, a marker crossing a cell face
   // changes eps by V_p / (29 V_cell) at once (0.12 for an RBC sphere in a 3 um cell), a source spike that
   // destabilised the tube case (methods note sec. 8 item 5-6); off there until a smoothing model exists.
@@ -39,6 +44,9 @@ struct CouplingSettings {
   int axis = 2;
   hs::common::Vec3 axis_point_m{};
   double tube_radius_m = 0.0;         // R_c in gamma+ = gammadot R_c^2 / nu
+  // Confinement factor K(d_p / 2 R_c) on every particle's drag (closures/wall_correction.hpp): the closures
+  // describe an unbounded sphere; haberman_sayre makes them the on-axis drag in the tube of radius tube_radius_m.
+  hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;
 };
 
 /// Closures by role; drag is required, lift and deformation may be null (no lift, DI = 0).
@@ -59,7 +67,7 @@ struct ExchangeStats {
 
 /// One coupled step (CFDEM order): particles -> grid (divided map, eps, Us, Ksl), fluid at the particles
 /// (velocity, gradient, pressure gradient, viscous force), per-particle forces (pressure gradient, viscous and
-/// lift explicit, drag implicit with beta = 3 pi mu d_p correction), n_coupling DEM steps, the exchange of the
+/// lift explicit, drag implicit with beta = 3 pi mu d_p correction K_wall), n_coupling DEM steps, the exchange of the
 /// DEM's drag impulse to the fluid, then one PISO step.
 class CfdDemCoupling {
  public:
@@ -75,6 +83,14 @@ class CfdDemCoupling {
   [[nodiscard]] hs::common::Vec3 fluid_momentum_kg_m_s() const;
   /// Total momentum of the owned particles, kg m/s.
   [[nodiscard]] hs::common::Vec3 particle_momentum_kg_m_s() const;
+
+  /// Restart (coupling_checkpoint.cpp): the fluid (names "fluid.*"), the particles ("dem.*") and the coupling's own
+  /// state ("coupling.*": eps of the last refresh, lift reaction, exchange bookkeeping with the pending imbalance,
+  /// mean velocity, step count) into one checkpoint, written after a step().
+  void write_state(hs::common::Checkpoint& cp) const;
+  /// Restores write_state() into a coupling built with the same case: the next step() continues the saved run
+  /// (to round-off: the DEM re-sorts its particles at the restart, see dem_checkpoint.hpp).
+  void read_state(const hs::common::Checkpoint& cp);
 
  private:
   void particle_forces();

@@ -86,4 +86,51 @@ void read_dem_checkpoint(DemSystem& dem, const std::filesystem::path& file) {
   dem.restore_contact_history(std::move(h));
 }
 
+void write_dem_state(const DemSystem& dem, hs::common::Checkpoint& cp, const std::string& prefix) {
+  const ParticleStore& p = dem.particles();
+  const std::size_t n = p.n_owned();
+  std::vector<double> columns;
+  for_each_saved_column(p, [&](const std::vector<double>& c) { columns.insert(columns.end(), c.begin(), c.begin() + static_cast<long>(n)); });
+  cp.put(prefix + "columns", columns);
+  cp.put(prefix + "ids", std::span<const std::int64_t>(p.id().data(), n));
+  const ContactHistory h = dem.contact_history();
+  std::vector<std::int64_t> keys;
+  std::vector<double> shear;
+  for (std::size_t k = 0; k < h.keys.size(); ++k) {
+    keys.insert(keys.end(), {h.keys[k].first, h.keys[k].second});
+    shear.insert(shear.end(), h.shear_m[k].begin(), h.shear_m[k].end());
+  }
+  cp.put(prefix + "contact_ids", keys);
+  cp.put(prefix + "contact_shear", shear);
+}
+
+void read_dem_state(DemSystem& dem, const hs::common::Checkpoint& cp, const std::string& prefix) {
+  const std::vector<std::int64_t>& ids = cp.integers(prefix + "ids");
+  const std::vector<double>& columns = cp.doubles(prefix + "columns");
+  const std::vector<std::int64_t>& keys = cp.integers(prefix + "contact_ids");
+  const std::vector<double>& shear = cp.doubles(prefix + "contact_shear");
+  const std::size_t n = ids.size();
+  ParticleStore& p = dem.particles();
+  p = ParticleStore{};
+  for (std::size_t i = 0; i < n; ++i) p.add({});
+  std::size_t count = 0;
+  for_each_saved_column(p, [&](std::vector<double>&) { ++count; });
+  if (columns.size() != count * n || keys.size() % 2 != 0 || 3 * (keys.size() / 2) != shear.size()) {
+    throw hs::common::ConfigError(fmt::format("checkpoint: DEM state \"{}\" is inconsistent ({} ids, {} column values, {} contacts)",
+                                              prefix, n, columns.size(), keys.size() / 2));
+  }
+  std::size_t at = 0;
+  for_each_saved_column(p, [&](std::vector<double>& c) {
+    std::copy(columns.begin() + static_cast<long>(at), columns.begin() + static_cast<long>(at + n), c.begin());
+    at += n;
+  });
+  std::copy(ids.begin(), ids.end(), p.id().begin());
+  ContactHistory h;
+  for (std::size_t k = 0; k < keys.size() / 2; ++k) {
+    h.keys.emplace_back(keys[2 * k], keys[2 * k + 1]);
+    h.shear_m.push_back({shear[3 * k], shear[3 * k + 1], shear[3 * k + 2]});
+  }
+  dem.restore_contact_history(std::move(h));
+}
+
 }  // namespace hs::unresolved

@@ -5,10 +5,12 @@
 #include <mpi.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include <Eigen/Sparse>
 
+#include "common/io/checkpoint.hpp"
 #include "common/vec3.hpp"
 #include "unresolved/fvm/block_field.hpp"
 #include "unresolved/fvm/fvm_grid.hpp"
@@ -102,6 +104,14 @@ class FvmSolver {
   /// Staggered velocity of component c (face nodes), m/s.
   [[nodiscard]] const BlockField<double>& face_velocity(int c) const { return u_[static_cast<std::size_t>(c)]; }
   [[nodiscard]] double courant_number() const;
+
+  // ---- Restart (fvm_checkpoint.cpp). ----
+  /// Puts everything the next step() reads into `cp` under names starting with `prefix`: velocities, pressure,
+  /// fluxes, the coupling fields, the drive gradient, time and step count.
+  void write_state(hs::common::Checkpoint& cp, const std::string& prefix) const;
+  /// Restores write_state(); the next step() continues the saved run bit for bit (the matrices are rebuilt from
+  /// the restored fields, as they are after every coupling refresh). ConfigError for another grid.
+  void read_state(const hs::common::Checkpoint& cp, const std::string& prefix);
 
  private:
   using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;

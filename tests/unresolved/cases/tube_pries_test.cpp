@@ -85,6 +85,9 @@ TEST(TubePriesCase, BadInputsNameTheKey) {
   expect_config_error(pries_case("0.10", "no_such_drag", "125"), "drag");          // unknown closure
   expect_config_error(pries_case("0.80", "stokes", "125"), "tube_hematocrit");     // above random close packing
   expect_config_error(pries_case("0.10", "stokes", "1"), "n_coupling");            // DEM step 10x too large
+  std::string wall = pries_case("0.10", "stokes", "125");
+  wall.replace(wall.find("[numerics]"), 10, "wall_correction = \"faxen\"\n[numerics]");
+  expect_config_error(wall, "wall_correction");                                     // unknown confinement correction
 }
 
 TEST(TubePriesCase, ImpossibleHematocritForThisTubeIsAConfigError) {

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+// One sphere pulled along the axis of the CFD-DEM tube through plasma at rest: the coupled drag against
+// Haberman & Sayre (1958) at the same confinement d_p / D, and the sphere's own disturbance of the fluid
+// velocity the closure is given in two-way coupling.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "closures/register_builtin.hpp"
+#include "closures/wall_correction.hpp"
+#include "common/geometry/tube.hpp"
+#include "unresolved/coupling/cfd_dem_coupling.hpp"
+
+namespace {
+
+using hs::common::Vec3;
+using namespace hs::unresolved;
+using hs::closures::WallCorrection;
+
+constexpr double kRho = 1025.0;   // plasma, rbc_blood_properties.csv
+constexpr double kNu = 1.2e-6;
+constexpr int kSteps = 50;
+constexpr int kAveraged = 20;     // the last 20 steps: the two-way run keeps a few-% step-to-step wobble
+
+struct DragRun {
+  double force_ratio;   // coupled drag beta_p (u_f - U) over -3 pi mu d_p U K_HS(d_p / D), mean of the last steps
+  double fluid_ratio;   // u_f / U: the fluid velocity interpolated at the sphere centre over the sphere's velocity
+  double velocity_m_s;  // the terminal velocity U reached
+};
+
+/// Tube of diameter D (10 cells across), periodic length 2 D, flow rate held at zero: the fluid is at rest far
+/// from the sphere with no net flux through a cross-section, as in Haberman & Sayre's sphere moving in a long
+/// closed tube. The sphere (RBC volume, d_p = 5.64 um, RBC density) starts on the axis at U0 and is pulled along
+/// it by a constant force F = 3 pi mu d_p U0 K_HS (their falling ball, with the pull for U0): it moves at the
+/// terminal velocity U where the drag the coupling computes, beta_p (u_f - U) with beta_p = 3 pi mu d_p K_HS
+/// from the Stokes closure and u_f interpolated at its centre, balances F. Pressure-gradient and viscous forces
+/// are off: they are separate terms of the split, the drag is what is compared. Re_p = d U / nu ~ 5e-4: Stokes
+/// drag (Schiller-Naumann would add 0.08%). No d(eps)/dt source: without a smoothing model its marker-crossing
+/// spikes make this single-sphere run oscillate (CouplingSettings::void_fraction_rate).
+DragRun drag_on_axis(double diameter_m, bool two_way) {
+  const double u0 = 1e-4;
+  const double length = 2.0 * diameter_m;
+  const double r = 0.5 * diameter_m;
+  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
+  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = diameter_m / 10, .sides = {}};
+  spec.sides[4].type = SideType::periodic;
+  spec.sides[5].type = SideType::periodic;
+  const FvmGrid grid(tube, spec);
+  // dt = 1e-5 s (1/20 of R^2 / nu at D = 30 um, above the particle relaxation time m / beta = 1.2 us, which the
+  // DEM integrates exactly); 50 steps = 2.6 R^2 / nu at D = 30 um: the disturbance near the sphere (dx^2 / nu =
+  // 7.5 us) is settled.
+  const double dt = 1e-5;
+  FvmSolver fluid(grid, {.density_kg_m3 = kRho, .kinematic_viscosity_m2_s = kNu},
+                  {.dt_s = dt, .pressure = {.tolerance = 1e-10, .rel_tol = 0.0}, .momentum_tolerance = 1e-12},
+                  {.mode = FlowDrive::Mode::flow_rate, .axis = 2, .flow_rate_m3_s = 0.0});
+  const ParticleParams params = default_particle_params();
+  DemSystem dem({.params = params, .domain = {.box = {{-r, -r, 0.0}, {r, r, length}}, .periodic = {false, false, true}},
+                 .time_step_s = dt / 100},   // 0.1 us < 0.1 x Rayleigh time 1.67 us of the default (stiff) spheres
+                &tube);
+  dem.add_particle({0.0, 0.0, 0.5 * length}, {0.0, 0.0, u0});
+  const double mu = kRho * kNu;
+  const double d = params.diameter_m;
+  const double stokes_hs = 3.0 * std::numbers::pi * mu * d * hs::closures::haberman_sayre_factor(d / diameter_m);
+  const double pull = stokes_hs * u0;
+  dem.set_force_hook([pull](ParticleStore& p) { p.force_N()[2][0] += pull; });
+  CouplingClosures closures;
+  closures.drag = hs::closures::make_drag_closure({.model = "stokes", .file = {}});
+  CfdDemCoupling coupling(fluid, dem,
+                          {.n_coupling = 100, .void_fraction_feedback = two_way, .two_way = two_way, .void_fraction_rate = false,
+                           .pressure_force = false, .viscous_force = false, .axis = 2, .axis_point_m = {0, 0, 0},
+                           .tube_radius_m = r, .wall_correction = WallCorrection::haberman_sayre},
+                          std::move(closures));
+  const ParticleStore& p = dem.particles();
+  DragRun mean{};
+  for (int s = 0; s < kSteps; ++s) {
+    coupling.step();
+    if (s < kSteps - kAveraged) continue;
+    // After step() the coupling has evaluated the closure for the next step: beta_p and u_f at the current state.
+    const double u = p.velocity_m_s()[2][0];
+    const double uf = p.fluid_velocity_m_s()[2][0];
+    mean.force_ratio += p.drag_coefficient_N_s_m()[0] * (uf - u) / (-stokes_hs * u) / kAveraged;
+    mean.fluid_ratio += uf / u / kAveraged;
+    mean.velocity_m_s += u / kAveraged;
+  }
+  std::printf("D = %3.0f um, %s coupling: U = %.5e m/s (U0 = %.0e), drag / (3 pi mu d_p U K_HS) = %.5f, u_f / U = %.4f\n",
+              diameter_m * 1e6, two_way ? "two-way" : "one-way", mean.velocity_m_s, u0, mean.force_ratio, mean.fluid_ratio);
+  return mean;
+}
+
+TEST(SphereInTube, DragLawWithWallCorrectionMatchesHabermanSayre) {
+  // The unresolved drag law at the confinement of the tube: closure x K_HS(d_p / D), evaluated by the coupling
+  // with the interpolated fluid velocity, integrated by the DEM's exact drag step, in the undisturbed flow of
+  // one-way coupling (the sphere's own disturbance is the next test). Acceptance band 3% (issue 7); with u_f = 0
+  // exactly the remaining error is the DEM's relaxation to the terminal velocity (exp(-t / 1.2 us) after 0.5 ms)
+  // and round-off, so it is far inside.
+  for (const double d : {30e-6, 100e-6}) {
+    const DragRun run = drag_on_axis(d, false);
+    EXPECT_NEAR(run.force_ratio, 1.0, 0.03) << "D = " << d;
+    EXPECT_NEAR(run.velocity_m_s, 1e-4, 0.03 * 1e-4) << "D = " << d;   // terminal velocity F / (3 pi mu d_p K_HS)
+  }
+}
+
+TEST(SphereInTube, TwoWayCouplingSlowsTheFluidTheClosureSees) {
+  // Measurement, not acceptance: in two-way coupling the sphere's own drag, given to the cells it sits in (divided
+  // map, Ksl), drags the fluid there along, so the interpolated u_f is not the undisturbed velocity (0 here) that
+  // the drag law and K_HS assume; the closure then underestimates the drag by the factor 1 - u_f / U. A point
+  // particle's self-induced velocity scales with d_p / dx (Horwitz & Mani 2016, J Comput Phys 318:85): d_p / dx =
+  // 1.88 at D = 30 um and 0.56 at D = 100 um with 10 cells across. The bounds are physical only: the fluid is
+  // dragged forwards (u_f > 0) but stays slower than the sphere (u_f < U), more so for the larger d_p / dx.
+  const DragRun fine = drag_on_axis(30e-6, true);
+  const DragRun coarse = drag_on_axis(100e-6, true);
+  for (const DragRun* run : {&fine, &coarse}) {
+    EXPECT_GT(run->fluid_ratio, 0.0);
+    EXPECT_LT(run->fluid_ratio, 1.0);
+  }
+  EXPECT_GT(fine.fluid_ratio, coarse.fluid_ratio);
+}
+
+}  // namespace
