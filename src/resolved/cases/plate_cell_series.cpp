@@ -152,6 +152,18 @@ nlohmann::json PlateCellSeries::migration_results() const {
     at.push_back({{"time_s", samples_[idx].time_s}, {"y_over_h", samples_[idx].centroid_m.y / h}});
   }
   r["lateral_position"] = at;
+  // Time at which the offset from the centreline first falls to half its initial value (linear interpolation
+  // between samples; 0 if it never does): a rate that does not depend on how long the run went on settling.
+  const double half = 0.5 * std::abs(config_.initial_height - 0.5);
+  double t_half = 0.0;
+  for (std::size_t i = 1; i < samples_.size() && t_half == 0.0; ++i) {
+    const double a = offset(samples_[i - 1]);
+    const double b = offset(samples_[i]);
+    if (a > half && b <= half) {
+      t_half = samples_[i - 1].time_s + (a - half) / (a - b) * (samples_[i].time_s - samples_[i - 1].time_s);
+    }
+  }
+  r["half_offset_time_s"] = t_half;
   const double mu = config_.density_kg_m3 * config_.kinematic_viscosity_m2_s;
   const double gamma0 = 4.0 * config_.u_max_m_s * std::abs(1.0 - 2.0 * config_.initial_height) / h;   // |du/dy| at y0
   r["ca_initial"] = common::capillary_number(mu, gamma0, kCellRadius_m, config_.membrane.material.shear_modulus_N_m);

@@ -3,11 +3,7 @@
 // summary with the flow mode and every dimensionless group; a stopped and resumed shear run repeats the series.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -16,34 +12,20 @@
 #include <nlohmann/json.hpp>
 
 #include "common/io/csv_writer.hpp"
+#include "resolved/cases/cli_case_helpers.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 int run(const std::string& args, std::string* output = nullptr) {
-  const std::string cmd = std::string(HS_BIN) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
-  const int status = pclose(pipe);
-  if (output != nullptr) *output = out;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const hs::test::CliResult r = hs::test::run_hemoscale(args);
+  if (output != nullptr) *output = r.output;
+  return r.code;
 }
 
-/// A shipped case with one line replaced (`from` must occur in it), in a fresh temporary folder.
 fs::path write_variant(const std::string& folder, const std::string& name, const std::string& from, const std::string& to) {
-  std::ifstream in(fs::path(HS_SOURCE_DIR) / "cases/resolved" / folder / "case.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos != std::string::npos) text.replace(pos, from.size(), to);
-  const auto dir = fs::temp_directory_path() / ("hs_plate_cell_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.toml") << text;
-  return dir;
+  return hs::test::write_case_variant(folder, "plate_cell_" + name, from, to);
 }
 
 nlohmann::json summary(const fs::path& out) {
@@ -98,7 +80,7 @@ TEST(MigrationCli, QuickRunWritesTheLateralPosition) {
   const auto r = summary(out)["results"];
   EXPECT_NEAR(r["reynolds"].get<double>(), 0.1, 1e-12);
   EXPECT_NEAR(r["u_max_m_s"].get<double>(), 0.1 * 1e-6 / 24e-6, 1e-15);
-  for (const char* key : {"final_y_over_h", "migration_speed_m_s", "lateral_position", "ca", "ca_initial"}) {
+  for (const char* key : {"final_y_over_h", "migration_speed_m_s", "lateral_position", "half_offset_time_s", "ca", "ca_initial"}) {
     EXPECT_TRUE(r.contains(key)) << key;
   }
   const auto vx = hs::common::read_csv(out / "timeseries.csv").column("velocity_x_m_s");
