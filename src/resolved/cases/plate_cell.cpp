@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
+#include <span>
 
 #include "common/run_context.hpp"
 #include "resolved/cases/cell_simulation.hpp"
@@ -64,14 +66,21 @@ double drive_lu(const PlateCellRun& r, long step) {
   return smooth_ramp(step, c.spin_up_steps) * r.units.to_lattice_acceleration(g_m_s2);
 }
 
-/// Angle of the principal axis that lies most in the shear plane (x, y): a disc flipping about z keeps one long
-/// axis along z, so the plain longest axis would be ambiguous.
-double shear_plane_inclination(const CellShape& shape) {
-  CellShape in_plane = shape;
-  if (std::abs(shape.axes[1].z) < std::abs(shape.axes[0].z) && shape.extents_m[1] > 0.9 * shape.extents_m[0]) {
-    in_plane.axes[0] = shape.axes[1];
+/// Orientation of the cell's outline in the shear plane (x, y): the long axis of the 2-D gyration tensor of the
+/// vertices projected on that plane, against the flow, in (-pi/2, pi/2]. Unlike the longest 3-D axis it is defined for
+/// a disc flipping about z (whose 3-D long axes are degenerate: one always lies along z). For a disc lying in the
+/// shear plane the outline is nearly circular and the angle is noise: read the marker phase there.
+double shear_plane_inclination(std::span<const Vec3> x, const Vec3& centroid_m) {
+  double sxx = 0.0, syy = 0.0, sxy = 0.0;
+  for (const auto& p : x) {
+    const Vec3 d = p - centroid_m;
+    sxx += d.x * d.x;
+    syy += d.y * d.y;
+    sxy += d.x * d.y;
   }
-  return inclination_angle(in_plane, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
+  double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+  if (angle <= -0.5 * std::numbers::pi) angle += std::numbers::pi;
+  return angle;
 }
 
 PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
@@ -80,7 +89,7 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
   PlateCellSample s;
   s.time_s = time_s;
   s.di = shape.deformation_index();
-  s.inclination_rad = shear_plane_inclination(shape);
+  s.inclination_rad = shear_plane_inclination(x, shape.centroid_m);
   const Vec3 d = x[static_cast<std::size_t>(r.marker)] - shape.centroid_m;
   s.marker_phase_rad = std::atan2(d.y, d.x);
   s.centroid_m = shape.centroid_m;
