@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The single list of case types `hemoscale run` knows: one line per case.
 #include "app/registry.hpp"
+#include "resolved/cases/plate_cell.hpp"
 #include "resolved/cases/stretching.hpp"
 #include "resolved/cases/tube_cell.hpp"
 #include "resolved/cases/tube_poiseuille.hpp"
@@ -16,6 +17,8 @@ std::map<std::string, Entry> case_types() {
   r["tube-plasma"] = {"plasma alone in a periodic tube (unresolved FVM), checked against Poiseuille", hs::unresolved::run_tube_plasma};
   r["tube-cell"] = {"one RBC in the periodic campaign tube: drag (centre fixed) or lift (axial motion only)", hs::resolved::run_tube_cell};
   r["tube-pries"] = {"RBC spheres in plasma in a periodic tube (CFD-DEM): Ht_d and mu_rel vs Pries 1992", hs::unresolved::run_tube_pries};
+  r["shear"] = {"one RBC in simple shear between moving plates: flow mode, tumbling period vs Jeffery, inclination", hs::resolved::run_shear};
+  r["migration"] = {"one RBC released off-centre in plane Poiseuille flow: lateral migration (Shi et al. 2014)", hs::resolved::run_migration};
   return r;
 }
 

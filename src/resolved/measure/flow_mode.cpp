@@ -19,6 +19,10 @@ std::string to_string(FlowMode mode) {
   return "unknown";
 }
 
+double jeffery_period(double shear_rate_1_s, double aspect_ratio) {
+  return 2.0 * std::numbers::pi * (aspect_ratio + 1.0 / aspect_ratio) / shear_rate_1_s;
+}
+
 void unwrap(std::span<double> angles, double modulus) {
   double offset = 0.0;
   for (std::size_t i = 1; i < angles.size(); ++i) {

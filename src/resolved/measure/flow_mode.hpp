@@ -22,6 +22,13 @@ std::string to_string(FlowMode mode);
 FlowMode classify_flow_mode(std::span<const double> inclination_rad, std::span<const double> marker_phase_rad,
                             double swing_limit_rad = 0.35);
 
+/// RBC aspect ratio (thickness over diameter) as a spheroid, r_e ~ 0.37: the value the campaign uses for Jeffery periods.
+inline constexpr double kRbcAspectRatio = 0.37;
+
+/// Jeffery (1922) period of a rigid spheroid of aspect ratio r_e in simple shear: T = 2 pi (r_e + 1/r_e) / gamma_dot
+/// (one full turn of the body; its shape repeats every T/2). 19.3 / gamma_dot at r_e = 0.37.
+double jeffery_period(double shear_rate_1_s, double aspect_ratio = kRbcAspectRatio);
+
 /// Removes jumps larger than half of `modulus` between consecutive samples (angle unwrapping).
 void unwrap(std::span<double> angles, double modulus);
 

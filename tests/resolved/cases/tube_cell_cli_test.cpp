@@ -15,38 +15,19 @@
 #include <nlohmann/json.hpp>
 
 #include "common/io/csv_writer.hpp"
+#include "resolved/cases/cli_case_helpers.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string output;
-};
+using Result = hs::test::CliResult;
 
-Result run(const std::string& args) {
-  const std::string cmd = std::string(HS_BIN) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), pipe) != nullptr) out += buf.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+Result run(const std::string& args) { return hs::test::run_hemoscale(args); }
 
 /// The shipped drag case with one line replaced (`from` must occur in it).
 fs::path write_variant(const std::string& name, const std::string& from, const std::string& to) {
-  std::ifstream in(fs::path(HS_SOURCE_DIR) / "cases/resolved/tube-drag/case.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos != std::string::npos) text.replace(pos, from.size(), to);
-  const auto dir = fs::temp_directory_path() / ("hs_tube_cell_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.toml") << text;
-  return dir;
+  return hs::test::write_case_variant("tube-drag", "tube_cell_" + name, from, to);
 }
 
 TEST(TubeCellCli, TauIsDerivedNotGiven) {

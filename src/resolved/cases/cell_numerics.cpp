@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Strict reading of [numerics] of the single-RBC coupled cases and the choice of lattice units from the Mach limit.
+#include "resolved/cases/cell_numerics.hpp"
+
+#include <algorithm>
+
+namespace hs::resolved {
+namespace {
+
+/// Reference lattice velocity: compressibility errors grow as Ma^2; Palabos-npFEM keeps u_lb <= 0.04 (resolved-methods
+/// 1.3, citing Krueger et al. 2017 table 7.2: 0.03-0.1). 0.04 is the default: at 0.05 the start-up transient at
+/// tau ~ 15 overshoots U_max by ~15 % and trips the Mach watchdog (0.1).
+constexpr double kLatticeVelocityDefault = 0.04;
+constexpr double kLatticeVelocityMax = 0.1;
+/// The membrane takes the fluid force explicitly (at x_n). Read 2 lu outside, that force acts like a drag
+/// c ~ mu A / d on the vertex velocity, and the explicit update is stable only while h c / m stays small, i.e.
+/// h nu_lu / m_lu is bounded: at tau = 12.5 (nu_lu = 4, k = 2) the 1125 kg/m^3 membrane diverged within 30
+/// steps, 3x heavier after 280 steps, 5x was noisy, 10x stayed smooth (measured, docs/resolved-coupling.md). The
+/// default factor is 1.25 nu_lu k (10 there). The cell's Stokes number stays < 0.01 (summary: cell_stokes_number).
+constexpr double kMassFactorPerViscosityStep = 1.25;
+/// Largest relaxation time: one RBC at r* = 0.2 in the campaign tube ran stably at tau = 30.5 (Re 0.2) and diverged
+/// near the cell after ~540 steps at tau = 60.5 (Re 0.1, lattice velocity 0.04), measured; docs/resolved-coupling.md.
+constexpr double kMaxTauDefault = 30.5;
+
+}  // namespace
+
+CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
+  if (n.has("tau")) n.fail("tau", "is derived from dx_m and lattice_velocity (tau = 1/2 + 3 nu dt / dx^2); remove it");
+  if (n.has("time_step_s")) n.fail("time_step_s", "is derived (dt = lattice_velocity dx / U_ref); remove it");
+  CellNumerics c;
+  c.dx_m = n.positive("dx_m");
+  c.lattice_velocity = n.number_in_or("lattice_velocity", 1e-4, kLatticeVelocityMax, kLatticeVelocityDefault);
+  c.max_tau = n.number_in_or("max_tau", 0.51, 1000.0, kMaxTauDefault);
+  c.collision.model = n.one_of_or("collision", {"trt", "bgk"}, "trt") == "trt" ? CollisionModel::trt : CollisionModel::bgk;
+  c.collision.magic = n.greater_than_or("trt_magic", 0.0, trt_magic_default);
+  c.wall = n.one_of_or("wall", {"bouzidi", "half_way"}, "bouzidi") == "bouzidi" ? WallRule::bouzidi : WallRule::half_way;
+  c.membrane_every = static_cast<int>(n.integer_in_or("membrane_every", 1, 100, 2));   // Palabos timestep_ShapeOp
+  c.membrane_mass_factor = n.number_in_or("membrane_mass_factor", 1.0, 1.0e4, 0.0);
+  c.ibm.kernel = delta_kernel_from_points(static_cast<int>(n.integer_in_or("ibm_kernel_points", 2, 4, 4)));
+  c.ibm.iterations = static_cast<int>(n.integer_in_or("ibm_iterations", 1, 50, 1));   // Palabos inamuro_iT = 1
+  c.traction_area = n.one_of_or("traction_area", {"sampled_surface", "membrane"}, "sampled_surface") == "membrane"
+                        ? TractionArea::membrane
+                        : TractionArea::sampled_surface;   // fluid_traction.hpp: why the sampled surface
+  return c;
+}
+
+void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, double reference_velocity_m_s,
+                          hs::common::ConfigSection numerics) {
+  n.dt_s = n.lattice_velocity * n.dx_m / reference_velocity_m_s;
+  n.collision.tau = 0.5 + 3.0 * kinematic_viscosity_m2_s * n.dt_s / (n.dx_m * n.dx_m);
+  if (n.collision.tau > n.max_tau) {   // slow flow: a smaller lattice velocity (more steps) keeps tau at max_tau
+    n.collision.tau = n.max_tau;
+    n.dt_s = (n.max_tau - 0.5) * n.dx_m * n.dx_m / (3.0 * kinematic_viscosity_m2_s);
+    n.lattice_velocity = reference_velocity_m_s * n.dt_s / n.dx_m;
+  }
+  const double nu_lu = (n.collision.tau - 0.5) / 3.0;
+  if (n.membrane_mass_factor == 0.0) {
+    n.membrane_mass_factor = std::max(1.0, kMassFactorPerViscosityStep * nu_lu * static_cast<double>(n.membrane_every));
+  }
+  numerics.derived("time_step_s", n.dt_s);
+  numerics.derived("tau", n.collision.tau);
+}
+
+}  // namespace hs::resolved

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// The [numerics] of every single-RBC coupled case (tube-cell, shear, migration): lattice units from the Mach limit,
+// the tau cap, the membrane step and mass scaling, the IBM settings.
+#pragma once
+
+#include "common/config/config_file.hpp"
+#include "resolved/ibm/coupled_cell.hpp"
+#include "resolved/lbm/boundary_links.hpp"
+#include "resolved/lbm/collision_params.hpp"
+
+namespace hs::resolved {
+
+struct CellNumerics {
+  double dx_m = 0.0;
+  double lattice_velocity = 0.0;      // reference velocity in lattice units: fixes dt (and so tau); lowered if tau > max_tau
+  double max_tau = 0.0;
+  CollisionParams collision;          // tau derived
+  WallRule wall = WallRule::bouzidi;
+  int membrane_every = 2;
+  double membrane_mass_factor = 0.0;  // numerical mass scaling of the membrane; 0 until derived (see the .cpp)
+  IbmSettings ibm;
+  TractionArea traction_area = TractionArea::sampled_surface;   // which area the sampled fluid stress acts on
+  double dt_s = 0.0;                  // derived
+};
+
+/// Reads [numerics] strictly (dx_m required, the rest with the defaults of the tube-cell campaign). tau and
+/// time_step_s are derived: giving them is a ConfigError.
+[[nodiscard]] CellNumerics read_cell_numerics(hs::common::ConfigSection numerics);
+
+/// Derives dt = lattice_velocity dx / u_ref, tau = 1/2 + 3 nu dt / dx^2; if tau > max_tau, dt (and the lattice
+/// velocity) are lowered so tau = max_tau; the membrane mass factor defaults to max(1, 1.25 nu_lu k). Records
+/// time_step_s and tau as derived keys of `numerics`.
+void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, double reference_velocity_m_s,
+                          hs::common::ConfigSection numerics);
+
+}  // namespace hs::resolved

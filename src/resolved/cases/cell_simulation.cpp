@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+// What every single-RBC coupled case shares: build, stages, frames, checkpoints, the sampled run loop.
+#include "resolved/cases/cell_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include "common/errors.hpp"
+#include "common/io/vtk_image.hpp"
+#include "common/parallel/gather.hpp"
+
+namespace hs::resolved {
+namespace {
+
+using common::Vec3;
+
+std::vector<double> flatten(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  std::vector<double> out;
+  for (const auto* v : {&a, &b}) {
+    for (const auto& p : *v) out.insert(out.end(), {p.x, p.y, p.z});
+  }
+  return out;
+}
+
+/// Rank 0's clock decides, so every rank writes the checkpoint of the same step.
+bool checkpoint_due(common::CheckpointSchedule& schedule, int rank) {
+  int due = rank == 0 && schedule.due() ? 1 : 0;
+  MPI_Bcast(&due, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return due != 0;
+}
+
+}  // namespace
+
+TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis) {
+  TriangleMesh mesh = build_membrane_mesh(membrane);
+  for (auto& v : mesh.vertices_m) {
+    if (axis == 0) v = {v.z, v.y, -v.x};   // rotation by +90 degrees about y: z -> x
+    if (axis == 1) v = {v.x, -v.z, v.y};   // rotation by +90 degrees about x: z -> y
+  }
+  return mesh;
+}
+
+void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const MembraneConfig& membrane, const CellNumerics& n,
+                      const Vec3& centroid_m) {
+  MembraneParameters material = membrane.material;
+  material.density_kg_m3 *= n.membrane_mass_factor;
+  s.membrane = std::make_unique<NpfemSolver>(mesh, material, membrane.solver, n.membrane_every * n.dt_s);
+  s.membrane->translate_m(centroid_m - s.membrane->centroid_m());
+  s.cell = std::make_unique<CoupledCell>(*s.lattice, *s.membrane, s.units,
+                                         CouplingSettings{.ibm = n.ibm, .membrane_every = n.membrane_every,
+                                                          .median_filter = true, .traction_area = n.traction_area,
+                                                          .lattice_origin_m = s.origin_m});
+}
+
+void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s) {
+  loop.add("membrane_solve", [&s] { s.cell->membrane_solve(); });
+  loop.add("ibm_forcing", [&s] { s.cell->ibm_forcing(); });
+  loop.add("lbm_stream_collide", [&s] { s.lattice->stream_collide(); });
+  loop.add("halo_exchange", [&s] { s.lattice->exchange_halos(); });
+  loop.add("lbm_boundaries", [&s] { s.lattice->apply_boundaries(); });
+  loop.add("markers_advect", [&s] { s.cell->markers_advect(); });
+}
+
+double smooth_ramp(long step, long steps) {
+  if (steps <= 0) return 1.0;
+  const double ramp = static_cast<double>(step) / static_cast<double>(steps);
+  return ramp >= 1.0 ? 1.0 : 0.5 * (1.0 - std::cos(std::numbers::pi * ramp));
+}
+
+void write_cell_frames(const CellSimulation& s, const common::RunContext& ctx, int frame, common::PvdSeries* membrane_pvd,
+                       common::PvdSeries* fluid_pvd) {
+  const double t = s.units.to_si_time(static_cast<double>(s.lattice->steps_done()));
+  std::vector<double> rho, u;
+  s.lattice->macroscopic(rho, u);
+  const auto rho_all = common::gather_to_root(s.lattice->decomposition(), rho, 1);
+  const auto u_all = common::gather_to_root(s.lattice->decomposition(), u, 3);
+  if (ctx.rank() != 0) return;
+  const auto x = s.membrane->positions_m();
+  common::VtkPolyData poly(x, s.membrane->triangles());
+  poly.add_point_vector("velocity_m_s", s.membrane->velocities_m_s());
+  const std::string mname = fmt::format("membrane_{:05d}.vtp", frame);
+  poly.write(ctx.folder().vtk_dir() / mname);
+  membrane_pvd->add(t, "vtk/" + mname);
+  if (fluid_pvd == nullptr) return;
+  std::vector<double> pressure(rho_all.size()), velocity(u_all.size());
+  for (std::size_t k = 0; k < rho_all.size(); ++k) pressure[k] = s.units.to_si_pressure((rho_all[k] - 1.0) / 3.0);
+  for (std::size_t k = 0; k < u_all.size(); ++k) velocity[k] = s.units.to_si_velocity(u_all[k]);
+  common::VtkImage image(s.nodes, s.origin_m, s.units.dx_m());
+  image.add_vector("velocity_m_s", velocity);
+  image.add_scalar("pressure_Pa", pressure, true);
+  const std::string fname = fmt::format("fields_{:05d}.vti", frame);
+  image.write(ctx.folder().vtk_dir() / fname);
+  fluid_pvd->add(t, "vtk/" + fname);
+}
+
+CellOutputs open_cell_outputs(const common::RunContext& ctx, const std::vector<std::string>& columns) {
+  CellOutputs out;
+  if (ctx.rank() != 0) return out;
+  out.csv = std::make_unique<common::CsvWriter>(ctx.folder().file("timeseries.csv"), columns);
+  out.membrane_pvd = std::make_unique<common::PvdSeries>(ctx.folder().file("membrane.pvd"));
+  out.fluid_pvd = std::make_unique<common::PvdSeries>(ctx.folder().file("fields.pvd"));
+  return out;
+}
+
+void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samples, const common::RunContext& ctx,
+                           long step, int frame) {
+  common::Checkpoint cp;
+  cp.put("populations", s.lattice->raw_populations());
+  const std::span<double> field = s.lattice->force_field();
+  cp.put("force_field", std::span<const double>(field.data(), field.size()));
+  cp.put("membrane", s.membrane->state());
+  const CouplingState st = s.cell->state();
+  cp.put("markers", flatten(st.marker_x_lu, st.marker_u_lu));
+  cp.put("series", samples);
+  cp.meta()["step"] = step;
+  cp.meta()["coupling_steps"] = st.steps;
+  cp.meta()["frame"] = frame;
+  cp.write(ctx.folder().checkpoint_dir(), ctx.rank());
+}
+
+long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const common::RunContext& ctx, int& frame) {
+  const common::Checkpoint cp = common::Checkpoint::read(ctx.folder().checkpoint_dir(), ctx.rank());
+  const long step = cp.meta()["step"].get<long>();
+  s.lattice->restore_raw_populations(cp.doubles("populations"), step);
+  const auto& field = cp.doubles("force_field");
+  const std::span<double> target = s.lattice->force_field();
+  if (field.size() != target.size()) throw common::ConfigError("checkpoint: force field of another lattice");
+  std::copy(field.begin(), field.end(), target.begin());
+  s.membrane->restore_state(cp.doubles("membrane"));
+  const auto& m = cp.doubles("markers");
+  CouplingState st;
+  const std::size_t n = m.size() / 6;
+  for (std::size_t k = 0; k < 2 * n; ++k) {
+    (k < n ? st.marker_x_lu : st.marker_u_lu).push_back({m[3 * k], m[3 * k + 1], m[3 * k + 2]});
+  }
+  st.steps = cp.meta()["coupling_steps"].get<long>();
+  s.cell->restore(st);
+  const auto& series = cp.doubles("series");
+  samples.assign(series.begin(), series.end());
+  frame = cp.meta()["frame"].get<int>();
+  return step;
+}
+
+bool run_sampled(common::TimeLoop& loop, CellSimulation& s, const common::RunContext& ctx, long sample_every_steps,
+                 double checkpoint_every_wall_s, common::Progress& progress, const SampledRunHooks& hooks,
+                 const int& frame) {
+  common::CheckpointSchedule schedule(checkpoint_every_wall_s);
+  bool done = hooks.done && hooks.done();
+  while (!done && loop.step() < loop.end_step()) {
+    loop.run_steps(sample_every_steps);
+    s.lattice->check_health();
+    hooks.sample();
+    done = hooks.done && hooks.done();
+    progress.update(loop.step());
+    if (checkpoint_due(schedule, ctx.rank())) write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
+  }
+  progress.finish();
+  write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
+  return done;
+}
+
+}  // namespace hs::resolved

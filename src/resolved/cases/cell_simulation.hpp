@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+// What every single-RBC coupled case shares: lattice + membrane + CoupledCell, the coupled stages of one step,
+// VTK frames, checkpoints and the sampled run loop (tube-cell, shear, migration).
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "common/io/checkpoint.hpp"
+#include "common/io/csv_writer.hpp"
+#include "common/io/vtk_polydata.hpp"
+#include "common/progress.hpp"
+#include "common/run_context.hpp"
+#include "common/time_loop.hpp"
+#include "common/units/unit_converter.hpp"
+#include "resolved/cases/cell_numerics.hpp"
+#include "resolved/ibm/coupled_cell.hpp"
+#include "resolved/lbm/fluid_lattice.hpp"
+#include "resolved/membrane/membrane_parameters.hpp"
+#include "resolved/membrane/npfem_solver.hpp"
+
+namespace hs::resolved {
+
+/// One RBC in a lattice fluid. Built in order: units, nodes, origin_m, lattice (by the case: geometry and walls),
+/// then add_membrane() and couple().
+struct CellSimulation {
+  common::UnitConverter units;
+  std::array<int, 3> nodes{};
+  common::Vec3 origin_m;               // SI position of global lattice node (0, 0, 0)
+  std::unique_ptr<FluidLattice> lattice;
+  std::unique_ptr<NpfemSolver> membrane;
+  std::unique_ptr<CoupledCell> cell;
+};
+
+/// The generated (or read) RBC mesh with its disc axis (generated along z) turned to `axis` (0 x, 1 y, 2 z).
+[[nodiscard]] TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis);
+
+/// Creates the npFEM solver (material density scaled by n.membrane_mass_factor, step membrane_every dt) with its
+/// centroid at `centroid_m`, then the CoupledCell (median filter on, as Palabos-npFEM).
+void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const MembraneConfig& membrane, const CellNumerics& n,
+                      const common::Vec3& centroid_m);
+
+/// The coupled stages of one lattice step, in Palabos-npFEM order (resolved-methods.md 2.3), named for the timers.
+void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s);
+
+/// Smooth switch-on 0 -> 1 over `steps` steps, (1 - cos(pi step / steps)) / 2: a sudden drive at large tau overshoots
+/// (the lattice stress lags the forcing by ~tau steps).
+[[nodiscard]] double smooth_ramp(long step, long steps);
+
+/// Writes the membrane (.vtp) and, when fluid_pvd is given, the lattice (.vti) frames; all ranks call, rank 0 writes.
+void write_cell_frames(const CellSimulation& s, const common::RunContext& ctx, int frame, common::PvdSeries* membrane_pvd,
+                       common::PvdSeries* fluid_pvd);
+
+/// Rank 0's output files (null on the other ranks): timeseries.csv, membrane.pvd, fields.pvd.
+struct CellOutputs {
+  std::unique_ptr<common::CsvWriter> csv;
+  std::unique_ptr<common::PvdSeries> membrane_pvd;
+  std::unique_ptr<common::PvdSeries> fluid_pvd;
+
+  void row(const std::vector<double>& values) const {
+    if (csv) csv->row(values);
+  }
+  /// Writes the next frame (membrane and fluid); all ranks call.
+  void write_frame(const CellSimulation& s, const common::RunContext& ctx, int& frame) const {
+    write_cell_frames(s, ctx, frame++, membrane_pvd.get(), fluid_pvd.get());
+  }
+};
+
+/// Opens the outputs with the time-series `columns` (rank 0).
+[[nodiscard]] CellOutputs open_cell_outputs(const common::RunContext& ctx, const std::vector<std::string>& columns);
+
+/// Everything needed to continue bit for bit: populations, force field, membrane, markers and the case's packed
+/// samples (one file per rank), written atomically.
+void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samples, const common::RunContext& ctx,
+                           long step, int frame);
+
+/// Restores write_cell_checkpoint(): fills `samples` and `frame`, returns the step to continue from.
+long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const common::RunContext& ctx, int& frame);
+
+/// What the sampled loop calls back.
+struct SampledRunHooks {
+  std::function<void()> sample;                      // after each block of sample_every steps, on all ranks
+  std::function<bool()> done;                        // stop early (e.g. settled); may be empty
+  std::function<std::vector<double>()> pack;         // the case's samples for checkpoints
+};
+
+/// Runs `loop` in blocks of `sample_every_steps` until its end or hooks.done(): lattice watchdog, sample, progress,
+/// a checkpoint every `checkpoint_every_wall_s` of wall time (rank 0's clock decides) and one at the end.
+/// Returns whether done() stopped it.
+bool run_sampled(common::TimeLoop& loop, CellSimulation& s, const common::RunContext& ctx, long sample_every_steps,
+                 double checkpoint_every_wall_s, common::Progress& progress, const SampledRunHooks& hooks, const int& frame);
+
+}  // namespace hs::resolved

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+// The plate cases: one RBC between parallel walls in simple shear or in plane Poiseuille flow.
+#include "resolved/cases/plate_cell.hpp"
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <span>
+
+#include "common/run_context.hpp"
+#include "resolved/cases/cell_simulation.hpp"
+#include "resolved/cases/plate_cell_config.hpp"
+#include "resolved/cases/plate_cell_series.hpp"
+#include "resolved/measure/cell_shape.hpp"
+
+namespace hs::resolved {
+namespace {
+
+using common::Vec3;
+
+struct PlateCellRun : CellSimulation {
+  PlateCellConfig c;
+  int marker = 0;   // the vertex whose phase about the centroid is tracked
+};
+
+/// Node j sits at y = (j + 1/2) dx: the half-way walls of the y faces are then at y = 0 and y = H = ny dx.
+std::unique_ptr<PlateCellRun> build(const PlateCellConfig& c) {
+  const CellNumerics& n = c.numerics;
+  auto run = std::make_unique<PlateCellRun>(PlateCellRun{
+      {.units = common::UnitConverter(common::LatticeScales{.dx_m = n.dx_m, .dt_s = n.dt_s, .rho_kg_m3 = c.density_kg_m3}),
+       .nodes = {static_cast<int>(std::lround(c.length_m / n.dx_m)), static_cast<int>(std::lround(c.gap_m / n.dx_m)),
+                 static_cast<int>(std::lround(c.width_m / n.dx_m))},
+       .origin_m = {0.0, 0.5 * n.dx_m, 0.0}, .lattice = nullptr, .membrane = nullptr, .cell = nullptr},
+      c, 0});
+  auto& r = *run;
+  const double h_m = r.nodes[1] * n.dx_m;
+  r.lattice = std::make_unique<FluidLattice>(
+      LatticeSpec{.global_nodes = r.nodes, .periodic = {true, false, true}, .collision = n.collision}, MPI_COMM_WORLD);
+  r.lattice->enable_force_field();
+  if (c.flow == PlateFlow::shear) {
+    // Started on the Couette profile: the wall speed is ~0.04 in lattice units at most, no start-up wave to fear.
+    const double u_wall_lu = r.units.to_lattice_velocity(0.5 * c.shear_rate_1_s * h_m);
+    r.lattice->set_face_wall_velocity(1, 0, {-u_wall_lu, 0.0, 0.0});
+    r.lattice->set_face_wall_velocity(1, 1, {u_wall_lu, 0.0, 0.0});
+    const double ny = r.nodes[1];
+    r.lattice->initialize([&](const Vec3& p) {
+      return NodeInit{.rho_lu = 1.0, .u_lu = {u_wall_lu * (2.0 * (p.y + 0.5) / ny - 1.0), 0.0, 0.0}};
+    });
+  } else {
+    r.lattice->initialize();   // at rest; the drive is ramped up (see drive_lu)
+  }
+  const Vec3 centre{0.5 * c.length_m, c.initial_height * h_m, 0.5 * c.width_m};
+  add_coupled_cell(r, cell_mesh_with_disc_axis(c.membrane, c.disc_axis), c.membrane, n, centre);
+  // Marker: the vertex furthest along the flow, on the rim in the shear plane for the default orientations.
+  const auto x = r.membrane->positions_m();
+  for (std::size_t v = 1; v < x.size(); ++v) {
+    if (x[v].x > x[static_cast<std::size_t>(r.marker)].x) r.marker = static_cast<int>(v);
+  }
+  return run;
+}
+
+/// Plane Poiseuille drive g = 8 nu U_max / H^2 (resolved-methods.md 1.3), switched on over spin_up_steps.
+double drive_lu(const PlateCellRun& r, long step) {
+  const PlateCellConfig& c = r.c;
+  const double g_m_s2 = 8.0 * c.kinematic_viscosity_m2_s * c.u_max_m_s / (c.gap_m * c.gap_m);
+  return smooth_ramp(step, c.spin_up_steps) * r.units.to_lattice_acceleration(g_m_s2);
+}
+
+/// Orientation of the cell's outline in the shear plane (x, y): the long axis of the 2-D gyration tensor of the
+/// vertices projected on that plane, against the flow, in (-pi/2, pi/2]. Unlike the longest 3-D axis it is defined for
+/// a disc flipping about z (whose 3-D long axes are degenerate: one always lies along z). For a disc lying in the
+/// shear plane the outline is nearly circular and the angle is noise: read the marker phase there.
+double shear_plane_inclination(std::span<const Vec3> x, const Vec3& centroid_m) {
+  double sxx = 0.0, syy = 0.0, sxy = 0.0;
+  for (const auto& p : x) {
+    const Vec3 d = p - centroid_m;
+    sxx += d.x * d.x;
+    syy += d.y * d.y;
+    sxy += d.x * d.y;
+  }
+  double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+  if (angle <= -0.5 * std::numbers::pi) angle += std::numbers::pi;
+  return angle;
+}
+
+PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
+  const auto x = r.membrane->positions_m();
+  const CellShape shape = measure_cell_shape(x);
+  PlateCellSample s;
+  s.time_s = time_s;
+  s.di = shape.deformation_index();
+  s.inclination_rad = shear_plane_inclination(x, shape.centroid_m);
+  const Vec3 d = x[static_cast<std::size_t>(r.marker)] - shape.centroid_m;
+  s.marker_phase_rad = std::atan2(d.y, d.x);
+  s.centroid_m = shape.centroid_m;
+  for (const auto& v : r.membrane->velocities_m_s()) s.velocity_m_s += v;
+  s.velocity_m_s = s.velocity_m_s / static_cast<double>(x.size());
+  return s;
+}
+
+int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
+  const char* type = flow == PlateFlow::shear ? "shear" : "migration";
+  const PlateCellConfig c = read_plate_cell(*request.config, flow, request.quick);
+  common::RunContext ctx = common::RunContext::start(request, type);
+  auto run = build(c);
+  PlateCellRun& r = *run;
+  if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
+  ctx.log().info("{}: Re = {:.4g}, shear rate {:.4g} 1/s, U_max {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
+                 "tau = {:.3f}, lattice velocity {:.4g}, membrane mass factor {:.3g}", type, c.reynolds,
+                 c.shear_rate_1_s, c.u_max_m_s, r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m, c.numerics.dt_s,
+                 c.numerics.collision.tau, c.numerics.lattice_velocity, c.numerics.membrane_mass_factor);
+  PlateCellSeries series(c);
+  int frame = 0;
+  long first_step = 0;
+  if (ctx.resuming()) {
+    std::vector<double> packed;
+    first_step = read_cell_checkpoint(r, packed, ctx, frame);
+    series.unpack(packed);
+  }
+  const CellOutputs out = open_cell_outputs(ctx, PlateCellSeries::columns());
+  for (const auto& s : series.samples()) out.row(series.row(s));   // rows up to the checkpoint (resume)
+  const long max_steps = r.units.to_lattice_steps(c.max_time_s);
+  common::TimeLoop loop(max_steps, first_step);
+  if (flow == PlateFlow::poiseuille) {
+    loop.add("body_force_ramp", [&] { r.lattice->set_body_force({drive_lu(r, loop.step()), 0.0, 0.0}); });
+  }
+  add_coupled_stages(loop, r);
+  const long frame_every = c.vtk_every_s > 0.0 ? r.units.to_lattice_steps(c.vtk_every_s) : 0;
+  loop.every(frame_every, "write_frames", [&] { out.write_frame(r, ctx, frame); });
+  common::Progress progress(type, max_steps, ctx.show_progress() && !request.quiet);
+  const SampledRunHooks hooks{.sample =
+                                  [&] {
+                                    const auto s = sample_state(r, r.units.to_si_time(static_cast<double>(loop.step())));
+                                    series.add(s);
+                                    out.row(series.row(s));
+                                  },
+                              .done = {},
+                              .pack = [&] { return series.pack(); }};
+  run_sampled(loop, r, ctx, c.sample_every_steps, c.checkpoint_every_wall_s, progress, hooks, frame);
+  out.write_frame(r, ctx, frame);
+  const double simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
+  ctx.log().info("stopped after {} steps ({:.4g} s simulated); wall time per stage:\n{}", loop.step(), simulated_s,
+                 loop.timing_table());
+  nlohmann::json summary;
+  summary["results"] = series.results();
+  summary["dx_m"] = c.numerics.dx_m;
+  summary["dt_s"] = c.numerics.dt_s;
+  summary["tau"] = c.numerics.collision.tau;
+  summary["membrane_mass_factor"] = c.numerics.membrane_mass_factor;
+  summary["steps"] = loop.step();
+  summary["simulated_time_s"] = simulated_s;
+  summary["wall_s_per_simulated_ms"] = ctx.wall_seconds() / (1e3 * simulated_s);
+  summary["stage_timings"] = loop.timings();
+  summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
+  ctx.write_summary(summary);
+  return 0;
+}
+
+}  // namespace
+
+int run_shear(const common::CaseRequest& request) { return run_plate_cell(request, PlateFlow::shear); }
+
+int run_migration(const common::CaseRequest& request) { return run_plate_cell(request, PlateFlow::poiseuille); }
+
+}  // namespace hs::resolved

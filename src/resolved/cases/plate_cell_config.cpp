@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+// Strict reading of the shear and migration case files and their derived lattice values.
+#include "resolved/cases/plate_cell_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "common/fluid_properties.hpp"
+#include "resolved/measure/flow_mode.hpp"
+
+namespace hs::resolved {
+namespace {
+
+constexpr long kQuickSamples = 40;
+/// Spin-up of the Poiseuille drive: the longer of H^2 / nu and 10 tau steps (the lattice stress relaxes over ~tau steps).
+constexpr double kSpinUpTaus = 10.0;
+/// Clearance (in dx) between the released cell and a wall: the 4-point IBM stencil reaches 2 dx, the stress is
+/// sampled up to 2 dx outside the membrane (resolved-methods.md 1.4).
+constexpr double kWallClearanceDx = 2.0;
+
+void read_flow(hs::common::ConfigSection f, PlateCellConfig& c) {
+  const double mu = c.density_kg_m3 * c.kinematic_viscosity_m2_s;
+  if (c.flow == PlateFlow::poiseuille) {
+    c.reynolds = f.positive("reynolds");
+    c.u_max_m_s = c.reynolds * c.kinematic_viscosity_m2_s / c.gap_m;
+    c.shear_rate_1_s = 4.0 * c.u_max_m_s / c.gap_m;
+    f.derived("u_max_m_s", c.u_max_m_s);
+    return;
+  }
+  f.forbid_together("shear_rate_1_s", "capillary", "give the shear rate or the capillary number Ca = mu gamma a / k_s");
+  if (f.has("capillary")) {
+    c.shear_rate_1_s = f.positive("capillary") * c.membrane.material.shear_modulus_N_m / (mu * kCellRadius_m);
+  } else {
+    c.shear_rate_1_s = f.positive("shear_rate_1_s");
+  }
+  c.u_max_m_s = 0.5 * c.shear_rate_1_s * c.gap_m;
+  c.reynolds = c.shear_rate_1_s * c.gap_m * c.gap_m / c.kinematic_viscosity_m2_s;
+  f.derived("shear_rate_1_s", c.shear_rate_1_s);
+}
+
+void read_run(hs::common::ConfigSection r, hs::common::ConfigSection o, PlateCellConfig& c) {
+  if (c.flow == PlateFlow::shear) {
+    r.forbid_together("max_time_s", "max_jeffery_periods", "give the cap either in seconds or in Jeffery periods");
+  }
+  c.max_time_s = c.flow == PlateFlow::shear && r.has("max_jeffery_periods")
+                     ? r.positive("max_jeffery_periods") * jeffery_period(c.shear_rate_1_s)
+                     : r.positive("max_time_s");
+  c.sample_every_s = r.positive("sample_every_s");
+  c.checkpoint_every_wall_s = r.positive_or("checkpoint_every_wall_s", 600.0);
+  c.vtk_every_s = o.non_negative_or("vtk_every_s", 0.0);
+}
+
+}  // namespace
+
+PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bool quick) {
+  PlateCellConfig c;
+  c.flow = flow;
+  auto root = file.root();
+  auto geometry = root.section("geometry");
+  c.gap_m = geometry.positive("gap_m");
+  c.length_m = geometry.positive("length_m");
+  c.width_m = geometry.positive("width_m");
+  const common::FluidProperties fluid = common::parse_fluid(root.section("fluid"));
+  c.density_kg_m3 = fluid.density_kg_m3;
+  c.kinematic_viscosity_m2_s = fluid.kinematic_viscosity_m2_s;
+  auto cell = root.section_or_empty("cell");
+  c.initial_height = cell.number_in_or("initial_height", 0.05, 0.95, 0.5);
+  const std::string axis = cell.one_of_or("disc_axis", {"x", "y", "z"}, flow == PlateFlow::shear ? "y" : "z");
+  c.disc_axis = axis == "x" ? 0 : (axis == "y" ? 1 : 2);
+  auto membrane = root.section_or_empty("membrane");
+  c.membrane = parse_membrane_config(membrane);
+  read_flow(root.section("flow"), c);
+  auto numerics = root.section("numerics");
+  c.numerics = read_cell_numerics(numerics);
+  read_run(root.section("run"), root.section_or_empty("output"), c);
+  file.finish();
+  derive_cell_numerics(c.numerics, c.kinematic_viscosity_m2_s, c.u_max_m_s, numerics);
+  const double dt = c.numerics.dt_s;
+  const long k = c.numerics.membrane_every;   // samples and checkpoints fall on membrane-step boundaries
+  c.sample_every_steps = std::max(k, k * std::lround(c.sample_every_s / (dt * static_cast<double>(k))));
+  c.sample_every_s = static_cast<double>(c.sample_every_steps) * dt;
+  if (flow == PlateFlow::poiseuille) {
+    c.spin_up_steps = std::max(std::lround(c.gap_m * c.gap_m / c.kinematic_viscosity_m2_s / dt),
+                               std::lround(kSpinUpTaus * c.numerics.collision.tau));
+  }
+  if (quick) c.max_time_s = std::min(c.max_time_s, static_cast<double>(kQuickSamples * c.sample_every_steps) * dt);
+  const double dx = c.numerics.dx_m;
+  const std::initializer_list<std::pair<const char*, double>> extents{
+      {"gap_m", c.gap_m}, {"length_m", c.length_m}, {"width_m", c.width_m}};
+  for (const auto& [key, value] : extents) {
+    if (value < 10.0 * dx) geometry.fail(key, fmt::format("must span at least 10 dx_m = {:g} m", 10.0 * dx));
+  }
+  // The rim (radius a) must clear the walls by the IBM stencil, whatever the orientation.
+  const double clearance = std::min(c.initial_height, 1.0 - c.initial_height) * c.gap_m - kCellRadius_m;
+  if (clearance < kWallClearanceDx * dx) {
+    cell.fail("initial_height", fmt::format("puts the cell rim {:.3g} m from a wall; keep >= {:g} dx_m (the IBM stencil)",
+                                            clearance, kWallClearanceDx));
+  }
+  return c;
+}
+
+}  // namespace hs::resolved

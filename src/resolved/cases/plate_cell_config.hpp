@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// The typed input of the two plate cases (one RBC between parallel walls): `shear` (walls moving at -U/2, +U/2)
+// and `migration` (plane Poiseuille flow driven by a body force), with their derived lattice values.
+#pragma once
+
+#include "common/config/config_file.hpp"
+#include "resolved/cases/cell_numerics.hpp"
+#include "resolved/membrane/membrane_parameters.hpp"
+
+namespace hs::resolved {
+
+enum class PlateFlow { shear, poiseuille };
+
+/// Coordinates: flow along x, walls at y = 0 and y = H, periodic in x and z (z is the vorticity direction).
+struct PlateCellConfig {
+  PlateFlow flow = PlateFlow::shear;
+  // [geometry]
+  double gap_m = 0.0;               // H
+  double length_m = 0.0;            // periodic box along x
+  double width_m = 0.0;             // periodic box along z
+  // [fluid]
+  double density_kg_m3 = 0.0;
+  double kinematic_viscosity_m2_s = 0.0;
+  // [flow] (shear: shear_rate_1_s or capillary; migration: reynolds = rho H U_max / mu, Shi et al. 2014)
+  double shear_rate_1_s = 0.0;      // shear: the imposed rate; migration: the wall shear rate 4 U_max / H
+  double u_max_m_s = 0.0;           // migration: centreline velocity; shear: wall speed U/2
+  double reynolds = 0.0;            // shear: rho gamma H^2 / mu (Couette, U = gamma H); migration: rho H U_max / mu
+  // [cell]
+  double initial_height = 0.5;      // y0 / H of the centroid at release
+  int disc_axis = 1;                // 0 x, 1 y, 2 z: direction of the disc's symmetry axis at release
+  MembraneConfig membrane;          // [membrane]
+  CellNumerics numerics;            // [numerics]
+  // [run]
+  double max_time_s = 0.0;
+  double sample_every_s = 0.0;
+  double checkpoint_every_wall_s = 0.0;
+  // [output]
+  double vtk_every_s = 0.0;         // 0: only the final frame
+  // derived
+  long sample_every_steps = 0;
+  long spin_up_steps = 0;           // migration: the drive is switched on smoothly over these steps (shear: 0)
+};
+
+/// RBC radius a = D0 / 2 = 3.91 um of the capillary number Ca = mu gamma_dot a / k_s (seed paper D0 = 7.82 um).
+inline constexpr double kCellRadius_m = 3.91e-6;
+
+/// Reads and checks a `shear` or `migration` case strictly (`flow` picks which [flow] keys apply). `quick` caps the
+/// run at 40 samples (CI). Throws hs::common::ConfigError naming file and key.
+PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bool quick);
+
+}  // namespace hs::resolved

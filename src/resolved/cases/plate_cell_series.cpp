@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: MIT
+// The sampled time series of a shear or migration run and its reduction to results and dimensionless groups.
+#include "resolved/cases/plate_cell_series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "common/dimensionless_groups.hpp"
+#include "resolved/measure/flow_mode.hpp"
+
+namespace hs::resolved {
+namespace {
+
+constexpr std::size_t kPackedFields = 10;
+/// Share of the series treated as start-up before averages (mean inclination, DI, tank-treading rate) are taken.
+constexpr double kTransientFraction = 0.5;
+
+std::size_t first_settled(std::size_t n) { return static_cast<std::size_t>(std::floor(kTransientFraction * static_cast<double>(n))); }
+
+}  // namespace
+
+TumblingPeriod tumbling_period(std::span<const double> time_s, std::span<const double> inclination_rad) {
+  std::vector<double> phi(inclination_rad.begin(), inclination_rad.end());
+  unwrap(phi, std::numbers::pi);
+  std::vector<double> crossings;
+  for (std::size_t i = 1; i < phi.size(); ++i) {
+    // Levels (k + 1/2) pi: the long axis across the flow, the fast part of a Jeffery orbit (sharp crossings).
+    const double a = phi[i - 1] / std::numbers::pi - 0.5;
+    const double b = phi[i] / std::numbers::pi - 0.5;
+    if (std::floor(a) == std::floor(b)) continue;
+    const double level = std::max(std::floor(a), std::floor(b));
+    const double w = (level - a) / (b - a);
+    crossings.push_back(time_s[i - 1] + w * (time_s[i] - time_s[i - 1]));
+  }
+  if (crossings.size() < 2) return {};
+  const int half_turns = static_cast<int>(crossings.size()) - 1;
+  return {.period_s = 2.0 * (crossings.back() - crossings.front()) / half_turns, .half_turns = half_turns};
+}
+
+std::vector<std::string> PlateCellSeries::columns() {
+  return {"time_s", "di", "inclination_rad", "marker_phase_rad", "centroid_x_m", "centroid_y_m", "centroid_z_m",
+          "y_over_h", "velocity_x_m_s", "velocity_y_m_s"};
+}
+
+std::vector<double> PlateCellSeries::row(const PlateCellSample& s) const {
+  return {s.time_s, s.di, s.inclination_rad, s.marker_phase_rad, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z,
+          s.centroid_m.y / config_.gap_m, s.velocity_m_s.x, s.velocity_m_s.y};
+}
+
+std::vector<double> PlateCellSeries::pack() const {
+  std::vector<double> out;
+  out.reserve(kPackedFields * samples_.size());
+  for (const auto& s : samples_) {
+    out.insert(out.end(), {s.time_s, s.di, s.inclination_rad, s.marker_phase_rad, s.centroid_m.x, s.centroid_m.y,
+                           s.centroid_m.z, s.velocity_m_s.x, s.velocity_m_s.y, s.velocity_m_s.z});
+  }
+  return out;
+}
+
+void PlateCellSeries::unpack(std::span<const double> flat) {
+  samples_.clear();
+  for (std::size_t k = 0; k + kPackedFields <= flat.size(); k += kPackedFields) {
+    const double* v = flat.data() + k;
+    samples_.push_back({.time_s = v[0], .di = v[1], .inclination_rad = v[2], .marker_phase_rad = v[3],
+                        .centroid_m = {v[4], v[5], v[6]}, .velocity_m_s = {v[7], v[8], v[9]}});
+  }
+}
+
+nlohmann::json PlateCellSeries::groups() const {
+  const double nu = config_.kinematic_viscosity_m2_s;
+  const double mu = nu * config_.density_kg_m3;
+  const double k_s = config_.membrane.material.shear_modulus_N_m;
+  nlohmann::json g;
+  g["reynolds"] = config_.reynolds;
+  g["shear_rate_1_s"] = config_.shear_rate_1_s;
+  g["ca"] = common::capillary_number(mu, config_.shear_rate_1_s, kCellRadius_m, k_s);
+  g["particle_reynolds"] = config_.shear_rate_1_s * kCellRadius_m * kCellRadius_m / nu;   // gamma a^2 / nu
+  g["confinement"] = 2.0 * kCellRadius_m / config_.gap_m;
+  g["u_max_m_s"] = config_.u_max_m_s;
+  return g;
+}
+
+nlohmann::json PlateCellSeries::results() const {
+  nlohmann::json r = config_.flow == PlateFlow::shear ? shear_results() : migration_results();
+  r.update(groups());
+  r["samples"] = samples_.size();
+  return r;
+}
+
+nlohmann::json PlateCellSeries::shear_results() const {
+  nlohmann::json r;
+  std::vector<double> t, incl, phase, di;
+  for (const auto& s : samples_) {
+    t.push_back(s.time_s);
+    incl.push_back(s.inclination_rad);
+    phase.push_back(s.marker_phase_rad);
+    di.push_back(s.di);
+  }
+  const FlowMode mode = classify_flow_mode(incl, phase);
+  const TumblingPeriod tumble = tumbling_period(t, incl);
+  const double jeffery = jeffery_period(config_.shear_rate_1_s);
+  r["flow_mode"] = to_string(mode);
+  r["tumbling_period_s"] = tumble.period_s;
+  r["tumbling_half_turns"] = tumble.half_turns;
+  r["jeffery_period_s"] = jeffery;
+  r["tumbling_period_over_jeffery"] = tumble.period_s / jeffery;
+  const std::size_t from = first_settled(samples_.size());
+  if (samples_.size() < 2 || from + 1 >= samples_.size()) return r;
+  // Mean inclination and DI over the second half; the marker's mean angular rate there is the tank-treading rate.
+  double sum_incl = 0.0, sum_di = 0.0;
+  for (std::size_t i = from; i < samples_.size(); ++i) {
+    sum_incl += incl[i];
+    sum_di += di[i];
+  }
+  const double n = static_cast<double>(samples_.size() - from);
+  unwrap(phase, 2.0 * std::numbers::pi);
+  const double rate = (phase.back() - phase[from]) / (t.back() - t[from]);
+  r["mean_inclination_rad"] = sum_incl / n;
+  r["mean_inclination_deg"] = sum_incl / n * 180.0 / std::numbers::pi;
+  r["di_mean"] = sum_di / n;
+  r["tank_treading_frequency_hz"] = mode == FlowMode::tank_treading ? std::abs(rate) / (2.0 * std::numbers::pi) : 0.0;
+  r["marker_rate_rad_s"] = rate;
+  r["period_s"] = mode == FlowMode::tumbling ? tumble.period_s
+                  : (mode == FlowMode::tank_treading && rate != 0.0 ? 2.0 * std::numbers::pi / std::abs(rate) : 0.0);
+  return r;
+}
+
+nlohmann::json PlateCellSeries::migration_results() const {
+  nlohmann::json r;
+  if (samples_.empty()) return r;
+  const double h = config_.gap_m;
+  const auto offset = [h](const PlateCellSample& s) { return std::abs(s.centroid_m.y - 0.5 * h) / h; };
+  const PlateCellSample& first = samples_.front();
+  const PlateCellSample& last = samples_.back();
+  r["initial_height"] = config_.initial_height;
+  r["final_y_over_h"] = last.centroid_m.y / h;
+  r["initial_offset_over_h"] = std::abs(config_.initial_height - 0.5);
+  r["final_offset_over_h"] = offset(last);
+  // Mean lateral speed toward the centreline, over the whole run (positive: toward the centre).
+  const double span_s = last.time_s - first.time_s;
+  const double toward_m = (std::abs(config_.initial_height - 0.5) - offset(last)) * h;
+  r["migration_speed_m_s"] = last.time_s > 0.0 ? toward_m / last.time_s : 0.0;
+  r["migration_speed_over_u_max"] = last.time_s > 0.0 ? toward_m / last.time_s / config_.u_max_m_s : 0.0;
+  r["sampled_span_s"] = span_s;
+  r["moved_toward_centre"] = toward_m > 0.0;
+  // Lateral position at quarters of the run, for the note and the plot legend.
+  nlohmann::json at = nlohmann::json::array();
+  for (const double f : {0.25, 0.5, 0.75, 1.0}) {
+    const auto idx = std::min(samples_.size() - 1,
+                              static_cast<std::size_t>(std::lround(f * static_cast<double>(samples_.size() - 1))));
+    at.push_back({{"time_s", samples_[idx].time_s}, {"y_over_h", samples_[idx].centroid_m.y / h}});
+  }
+  r["lateral_position"] = at;
+  // Time at which the offset from the centreline first falls to half its initial value (linear interpolation
+  // between samples; 0 if it never does): a rate that does not depend on how long the run went on settling.
+  const double half = 0.5 * std::abs(config_.initial_height - 0.5);
+  double t_half = 0.0;
+  for (std::size_t i = 1; i < samples_.size() && t_half == 0.0; ++i) {
+    const double a = offset(samples_[i - 1]);
+    const double b = offset(samples_[i]);
+    if (a > half && b <= half) {
+      t_half = samples_[i - 1].time_s + (a - half) / (a - b) * (samples_[i].time_s - samples_[i - 1].time_s);
+    }
+  }
+  r["half_offset_time_s"] = t_half;
+  const double mu = config_.density_kg_m3 * config_.kinematic_viscosity_m2_s;
+  const double gamma0 = 4.0 * config_.u_max_m_s * std::abs(1.0 - 2.0 * config_.initial_height) / h;   // |du/dy| at y0
+  r["ca_initial"] = common::capillary_number(mu, gamma0, kCellRadius_m, config_.membrane.material.shear_modulus_N_m);
+  r["mean_axial_velocity_over_u_max"] = last.velocity_m_s.x / config_.u_max_m_s;
+  return r;
+}
+
+}  // namespace hs::resolved

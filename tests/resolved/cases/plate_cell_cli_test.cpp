@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// The shear and migration cases through `hemoscale run`: a short --quick run of each writes finite time series and a
+// summary with the flow mode and every dimensionless group; a stopped and resumed shear run repeats the series.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/io/csv_writer.hpp"
+#include "resolved/cases/cli_case_helpers.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int run(const std::string& args, std::string* output = nullptr) {
+  const hs::test::CliResult r = hs::test::run_hemoscale(args);
+  if (output != nullptr) *output = r.output;
+  return r.code;
+}
+
+fs::path write_variant(const std::string& folder, const std::string& name, const std::string& from, const std::string& to) {
+  return hs::test::write_case_variant(folder, "plate_cell_" + name, from, to);
+}
+
+nlohmann::json summary(const fs::path& out) {
+  std::ifstream in(out / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+void expect_finite_series(const fs::path& out, std::size_t rows) {
+  const auto csv = hs::common::read_csv(out / "timeseries.csv");
+  for (const auto& col : csv.columns) {
+    const auto v = csv.column(col);
+    ASSERT_EQ(v.size(), rows) << col;
+    for (const double x : v) EXPECT_TRUE(std::isfinite(x)) << col;
+  }
+  const auto di = csv.column("di");
+  EXPECT_GT(di.back(), 0.3);   // a biconcave disc: DI ~ 0.5 at rest; it must neither collapse nor explode
+  EXPECT_LT(di.back(), 0.8);
+}
+
+TEST(ShearCli, QuickRunGivesAFlowModeAndTheGroups) {
+  // 40 samples of 0.2 ms = 8 ms (960 steps, ~0.17 Jeffery period): every stage and output, not a whole flip.
+  const auto dir = write_variant("shear", "quick", "vtk_every_s = 0.01", "vtk_every_s = 0.004");
+  const auto out = dir / "out";
+  std::string log;
+  ASSERT_EQ(run("run --quiet --quick " + dir.string() + " --output " + out.string(), &log), 0) << log;
+  expect_finite_series(out, 40);
+  const auto r = summary(out)["results"];
+  const std::string mode = r["flow_mode"].get<std::string>();
+  EXPECT_TRUE(mode == "tumbling" || mode == "tank-treading" || mode == "intermediate" || mode == "steady") << mode;
+  EXPECT_NEAR(r["shear_rate_1_s"].get<double>(), 400.0, 1e-12);
+  EXPECT_NEAR(r["ca"].get<double>(), 1.025e-3 * 400.0 * 3.91e-6 / 1.0e-4, 1e-12);   // mu gamma a / k_s
+  EXPECT_NEAR(r["reynolds"].get<double>(), 400.0 * 24e-6 * 24e-6 / 1e-6, 1e-12);
+  EXPECT_NEAR(r["jeffery_period_s"].get<double>(), 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37) / 400.0, 1e-12);
+  for (const char* key : {"mean_inclination_rad", "tank_treading_frequency_hz", "di_mean", "period_s", "particle_reynolds"}) {
+    EXPECT_TRUE(r.contains(key)) << key;
+  }
+  // The stiff disc starts parallel to the plates and must start turning with the flow (clockwise: angle < 0).
+  const auto incl = hs::common::read_csv(out / "timeseries.csv").column("inclination_rad");
+  EXPECT_LT(incl.back(), -0.05);
+  EXPECT_TRUE(fs::exists(out / "membrane.pvd"));
+  EXPECT_TRUE(fs::exists(out / "fields.pvd"));
+}
+
+TEST(MigrationCli, QuickRunWritesTheLateralPosition) {
+  // 40 samples of 0.1 ms = 4 ms (420 steps): the drive spins up and the cell starts moving; migration itself takes
+  // ~0.1 s (`hemoscale run cases/resolved/migration`), too long for CI.
+  const auto dir = write_variant("migration", "quick", "sample_every_s = 1.0e-3", "sample_every_s = 1.0e-4");
+  const auto out = dir / "out";
+  std::string log;
+  ASSERT_EQ(run("run --quiet --quick " + dir.string() + " --output " + out.string(), &log), 0) << log;
+  expect_finite_series(out, 40);
+  const auto r = summary(out)["results"];
+  EXPECT_NEAR(r["reynolds"].get<double>(), 0.1, 1e-12);
+  EXPECT_NEAR(r["u_max_m_s"].get<double>(), 0.1 * 1e-6 / 24e-6, 1e-15);
+  for (const char* key : {"final_y_over_h", "migration_speed_m_s", "lateral_position", "half_offset_time_s", "ca", "ca_initial"}) {
+    EXPECT_TRUE(r.contains(key)) << key;
+  }
+  const auto vx = hs::common::read_csv(out / "timeseries.csv").column("velocity_x_m_s");
+  EXPECT_GT(vx.back(), 0.0);   // carried downstream by the flow
+}
+
+TEST(ShearCli, StoppedAndResumedRunGivesTheUninterruptedTimeSeries) {
+  // 1.6 ms (8 samples) at once versus 0.8 ms then --resume to 1.6 ms: the shared checkpoint must continue bit for bit.
+  const std::string cap = "max_jeffery_periods = 2.5 ";
+  const auto whole = write_variant("shear", "resume_whole", cap, "max_time_s = 0.0016 ");
+  ASSERT_EQ(run("run --quiet " + whole.string() + " --output " + (whole / "out").string()), 0);
+  const auto part = write_variant("shear", "resume_part", cap, "max_time_s = 0.0008 ");
+  const auto out = part / "out";
+  ASSERT_EQ(run("run --quiet " + part.string() + " --output " + out.string()), 0);
+  const auto rest = write_variant("shear", "resume_rest", cap, "max_time_s = 0.0016 ");
+  std::string log;
+  ASSERT_EQ(run("run --quiet " + rest.string() + " --output " + out.string() + " --resume", &log), 0) << log;
+  const auto a = hs::common::read_csv(whole / "out" / "timeseries.csv");
+  const auto b = hs::common::read_csv(out / "timeseries.csv");
+  for (const auto& col : a.columns) {
+    const auto x = a.column(col);
+    const auto y = b.column(col);
+    ASSERT_EQ(x.size(), y.size()) << col;
+    for (std::size_t k = 0; k < x.size(); ++k) EXPECT_EQ(y[k], x[k]) << col << " row " << k;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// The plate cases' input and reduction: derived numerics of shear and migration against their formulas, bad input,
+// and the tumbling period read from a synthetic Jeffery orbit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <vector>
+
+#include "common/errors.hpp"
+#include "resolved/cases/plate_cell_config.hpp"
+#include "resolved/cases/plate_cell_series.hpp"
+#include "resolved/measure/flow_mode.hpp"
+
+namespace hs::resolved {
+namespace {
+
+std::string shipped(const std::string& folder) {
+  std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/" + folder + "/case.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  if (pos != std::string::npos) text.replace(pos, from.size(), to);
+  return text;
+}
+
+PlateCellConfig read(const std::string& toml, PlateFlow flow) {
+  auto file = common::ConfigFile::parse(toml, "case.toml");
+  // [case] type is read by the case dispatcher in the app.
+  EXPECT_EQ(file->root().section("case").string("type"), flow == PlateFlow::shear ? "shear" : "migration");
+  return read_plate_cell(*file, flow, false);
+}
+
+TEST(PlateCellConfig, ShearRateFixesTheWallSpeedAndTheGroups) {
+  const PlateCellConfig c = read(shipped("shear"), PlateFlow::shear);
+  // U/2 = gamma H / 2 = 400 * 12 um = 4.8 mm/s; dt = 0.04 dx / (U/2) = 8.33 us; tau = 1/2 + 3 nu dt / dx^2 = 25.5.
+  EXPECT_NEAR(c.u_max_m_s, 4.8e-3, 1e-15);
+  EXPECT_NEAR(c.numerics.dt_s, 0.04e-6 / 4.8e-3, 1e-18);
+  EXPECT_NEAR(c.numerics.collision.tau, 0.5 + 3.0 * 0.04e-6 / 4.8e-3 / 1e-6, 1e-9);
+  EXPECT_NEAR(c.reynolds, 400.0 * 24e-6 * 24e-6 / 1e-6, 1e-12);   // rho gamma H^2 / mu
+  EXPECT_NEAR(c.max_time_s, 2.5 * jeffery_period(400.0), 1e-12);
+  EXPECT_EQ(c.spin_up_steps, 0);   // started on the Couette profile
+}
+
+TEST(PlateCellConfig, CapillaryNumberGivesTheShearRate) {
+  const PlateCellConfig c = read(shipped("shear/tank-treading"), PlateFlow::shear);
+  // gamma = Ca k_s / (mu a) with Ca = 1, k_s = 2.5 uN/m (default), mu = 1.025 mPa s, a = 3.91 um.
+  EXPECT_NEAR(c.shear_rate_1_s, 2.5e-6 / (1025.0 * 1e-6 * 3.91e-6), 1e-9);
+  EXPECT_EQ(c.disc_axis, 1);
+}
+
+TEST(PlateCellConfig, ShearRateAndCapillaryTogetherAreRefused) {
+  const std::string toml = with(shipped("shear"), "shear_rate_1_s = 400.0", "shear_rate_1_s = 400.0\ncapillary = 0.1");
+  EXPECT_THROW(read(toml, PlateFlow::shear), common::ConfigError);
+}
+
+TEST(PlateCellConfig, MigrationReynoldsFixesUmaxAndTheSpinUp) {
+  const PlateCellConfig c = read(shipped("migration"), PlateFlow::poiseuille);
+  const double u_max = 0.1 * 1e-6 / 24e-6;   // Re = rho H U_max / mu
+  EXPECT_NEAR(c.u_max_m_s, u_max, 1e-15);
+  EXPECT_NEAR(c.shear_rate_1_s, 4.0 * u_max / 24e-6, 1e-9);   // wall shear rate of plane Poiseuille flow
+  EXPECT_NEAR(c.numerics.dt_s, 0.04e-6 / u_max, 1e-18);
+  EXPECT_NEAR(c.numerics.collision.tau, 0.5 + 3.0 * 0.04e-6 / u_max / 1e-6, 1e-9);   // 29.3 < 30.5: no cap
+  // Spin-up: max(H^2 / nu = 576 us = 60 steps, 10 tau = 293 steps).
+  EXPECT_EQ(c.spin_up_steps, std::lround(10.0 * c.numerics.collision.tau));
+}
+
+TEST(PlateCellConfig, ReleaseTooCloseToAWallIsRefused) {
+  // y0 = 0.1 H = 2.4 um < a = 3.91 um: the rim would cross the wall.
+  const std::string toml = with(shipped("migration"), "initial_height = 0.3", "initial_height = 0.1");
+  EXPECT_THROW(read(toml, PlateFlow::poiseuille), common::ConfigError);
+}
+
+TEST(TumblingPeriod, ReadsTheJefferyPeriodOfASyntheticOrbit) {
+  // Jeffery orbit of the long axis: tan(phi) = -r_e tan(2 pi t / T) (phi against the flow, turning clockwise),
+  // sampled at 200 points per period and folded to (-pi/2, pi/2] like the measured inclination.
+  const double r_e = 0.37;
+  const double period = jeffery_period(100.0, r_e);
+  std::vector<double> t, phi;
+  for (int i = 0; i <= 700; ++i) {
+    const double time = period * i / 200.0;
+    const double a = std::atan2(-r_e * std::sin(2.0 * std::numbers::pi * time / period),
+                                std::cos(2.0 * std::numbers::pi * time / period));
+    double folded = a;
+    if (folded > std::numbers::pi / 2) folded -= std::numbers::pi;
+    if (folded <= -std::numbers::pi / 2) folded += std::numbers::pi;
+    t.push_back(time);
+    phi.push_back(folded);
+  }
+  const TumblingPeriod p = tumbling_period(t, phi);
+  EXPECT_EQ(p.half_turns, 6);   // 3.5 periods: 7 crossings of the across-flow direction
+  // Linear interpolation of the crossing times is exact up to the curvature of phi(t) within one sample (1/200 T).
+  EXPECT_NEAR(p.period_s, period, 1e-3 * period);
+  EXPECT_EQ(to_string(classify_flow_mode(phi, phi)), "tumbling");
+}
+
+}  // namespace
+}  // namespace hs::resolved
