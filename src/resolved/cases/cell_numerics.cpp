@@ -38,9 +38,11 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
   c.membrane_mass_factor = n.number_in_or("membrane_mass_factor", 1.0, 1.0e4, 0.0);
   c.ibm.kernel = delta_kernel_from_points(static_cast<int>(n.integer_in_or("ibm_kernel_points", 2, 4, 4)));
   c.ibm.iterations = static_cast<int>(n.integer_in_or("ibm_iterations", 1, 50, 1));   // Palabos inamuro_iT = 1
-  c.traction_area = n.one_of_or("traction_area", {"sampled_surface", "membrane"}, "sampled_surface") == "membrane"
-                        ? TractionArea::membrane
-                        : TractionArea::sampled_surface;   // fluid_traction.hpp: why the sampled surface
+  // fluid_traction.hpp: why the whole-cell scaled membrane areas are the default.
+  const std::string area = n.one_of_or("traction_area", {"scaled_membrane", "sampled_surface", "membrane"}, "scaled_membrane");
+  c.traction_area = area == "membrane"          ? TractionArea::membrane
+                    : area == "sampled_surface" ? TractionArea::sampled_surface
+                                                : TractionArea::scaled_membrane;
   return c;
 }
 

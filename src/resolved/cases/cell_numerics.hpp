@@ -19,7 +19,7 @@ struct CellNumerics {
   int membrane_every = 2;
   double membrane_mass_factor = 0.0;  // numerical mass scaling of the membrane; 0 until derived (see the .cpp)
   IbmSettings ibm;
-  TractionArea traction_area = TractionArea::sampled_surface;   // which area the sampled fluid stress acts on
+  TractionArea traction_area = TractionArea::scaled_membrane;   // which area the sampled fluid stress acts on
   double dt_s = 0.0;                  // derived
 };
 

@@ -16,7 +16,7 @@ struct CouplingSettings {
   IbmSettings ibm;
   int membrane_every = 2;          // lattice steps per membrane step, h = k dt (Palabos timestep_ShapeOp = 2)
   bool median_filter = true;       // Palabos-npFEM FILTERING is on (resolved-methods.md 1.4 step 6)
-  TractionArea traction_area = TractionArea::sampled_surface;   // see fluid_traction.hpp
+  TractionArea traction_area = TractionArea::scaled_membrane;   // see fluid_traction.hpp
   common::Vec3 lattice_origin_m;   // SI position of global lattice node (0, 0, 0)
 };
 

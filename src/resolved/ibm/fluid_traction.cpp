@@ -91,7 +91,7 @@ common::Vec3 stress_times(const double* s, const common::Vec3& a) {
 std::vector<common::Vec3> acting_areas(const SurfaceSample& surface, const std::vector<double>& distance,
                                        TractionArea rule) {
   std::vector<common::Vec3> area(surface.x_lu.size());
-  if (rule == TractionArea::sampled_surface) {
+  if (rule != TractionArea::membrane) {
     if (surface.triangles.empty()) throw std::invalid_argument("fluid_traction: the sampled surface needs triangles");
     // Each vertex's area vector on the parallel surface at its own distance d_v. A vertex area vector is exactly
     // quadratic in a uniform offset, so three offsets (0, 1, 2 lu) give it at any d. A neighbour's jump to another
@@ -105,6 +105,15 @@ std::vector<common::Vec3> acting_areas(const SurfaceSample& surface, const std::
       const double d = distance[v];
       area[v] = 0.5 * (d - 1.0) * (d - 2.0) * at[0][v] - d * (d - 2.0) * at[1][v] + 0.5 * d * (d - 1.0) * at[2][v];
     }
+    if (rule == TractionArea::sampled_surface) return area;
+    double sampled = 0.0;
+    double own = 0.0;
+    for (std::size_t v = 0; v < area.size(); ++v) {
+      sampled += common::norm(area[v]);
+      own += surface.area_lu[v];
+    }
+    const double factor = own > 0.0 ? sampled / own : 1.0;
+    for (std::size_t v = 0; v < area.size(); ++v) area[v] = factor * surface.area_lu[v] * surface.normal[v];
     return area;
   }
   for (std::size_t v = 0; v < area.size(); ++v) area[v] = surface.area_lu[v] * surface.normal[v];

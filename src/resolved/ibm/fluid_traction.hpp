@@ -25,8 +25,13 @@ struct SurfaceSample {
 ///    28 % (dx = 1 um) to 46 % (dx = 0.5 um) of the hydrodynamic force (docs/resolved-coupling.md).
 ///  sampled_surface: the vertex's area vector on the surface parallel to the membrane at its sampling distance.
 ///    In Stokes flow the stress flux through any surface enclosing the body and the spread IBM force is the force
-///    on the body, so the tractions then add up to it whatever the resolution.
-enum class TractionArea { membrane, sampled_surface };
+///    on the body, so the tractions then add up to it whatever the resolution. But the parallel surface of a thin
+///    disc at d ~ 2 lu grows the rim's areas ~6x against the faces', and a stiff cell in shear then turned against
+///    the vorticity (measured, docs/resolved-coupling.md): right in total, wrong in distribution.
+///  scaled_membrane (default): the membrane's own area vectors, all multiplied by one factor per cell, the ratio
+///    of the sampled parallel surface's total area to the membrane's. Palabos-npFEM's distribution (which turns the
+///    disc the right way) with the total restored to the flux estimate.
+enum class TractionArea { membrane, sampled_surface, scaled_membrane };
 
 /// Per-vertex traction force in lattice units (rho dx^4/dt^2), and the diagnostics of how it was read.
 struct TractionResult {
