@@ -87,6 +87,7 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   }
   work_ = std::make_unique<Workspace>(settings.lbfgs_history, n);
   work_->proxy = BlockedLdlt(proxy_);
+  work_->damped_mass = BlockedLdlt(damped_mass_solver_);
   // Rank-2 Woodbury correction for the global volume and area energies, from their rest gradients.
   Positions gv, ga;
   energy_->volume_area_gradients(Positions(x_um_.rowwise() - c), gv, ga);
@@ -151,13 +152,14 @@ void NpfemSolver::clear_external_forces() { f_ext_pN_.setZero(); }
 NpfemStepReport NpfemSolver::step() {
   const Eigen::RowVector3d c = x_um_.colwise().mean();   // work about the centroid (conditioning)
   const Positions xn = x_um_.rowwise() - c;
-  const Positions rhs = mass_fg_ * v_um_us_ + h_us_ * f_ext_pN_;
-  const Positions y = xn + h_us_ * Positions(damped_mass_solver_.solve(rhs));
+  Workspace& w = *work_;
+  w.rhs.noalias() = mass_fg_ * v_um_us_ + h_us_ * f_ext_pN_;
+  w.damped_mass.solve(w.rhs, w.dir);
+  const Positions y = xn + h_us_ * w.dir;
   Positions x, g;
   const double fx = start(xn, y, x, g);
   const NpfemStepReport report =
       settings_.iteration == NpfemIteration::lbfgs ? minimise(x, y, g, fx) : projective_dynamics(x, y, g, fx);
-  Workspace& w = *work_;
   w.correction[1].swap(w.correction[0]);
   w.correction[0].noalias() = x - y;
   w.corrections = std::min(w.corrections + 1, 2);
