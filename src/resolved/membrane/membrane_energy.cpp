@@ -33,9 +33,12 @@ void sym2_eigen(const Eigen::Matrix2d& c, Eigen::Vector2d& values, Eigen::Matrix
   vectors << e[0], -e[1], e[1], e[0];
 }
 
-/// Closest point (d1, d2) to (s1, s2) on the hyperbola d1 d2 = 1 (PD area projection), by Newton on d1 = t.
+/// Closest point (d1, d2) to (s1, s2) on the hyperbola d1 d2 = 1 (PD area projection), by Newton on d1 = t, started
+/// from the first-order projection along the constraint normal (s2, s1) (the stiff area term keeps s1 s2 near 1,
+/// so that start is within O((s1 s2 - 1)^2) and two Newton steps reach round-off), or from sqrt(s1/s2) far from it.
 Eigen::Vector2d area_projection(double s1, double s2) {
-  double t = std::sqrt(s1 / s2);
+  const double linear = s1 - (s1 * s2 - 1.0) * s2 / (s1 * s1 + s2 * s2);
+  double t = linear > 0.5 * std::sqrt(s1 / s2) ? linear : std::sqrt(s1 / s2);
   for (int it = 0; it < 20; ++it) {
     const double inv = 1.0 / t;
     const double d1 = 2.0 * (t - s1) - 2.0 * (inv - s2) * inv * inv;
@@ -114,24 +117,36 @@ double MembraneEnergy::triangle_terms(const Positions& x, Positions& gradient) c
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     const auto& t = triangles_[i];
     const TriangleRest& r = rest_[i];
-    Eigen::Matrix<double, 3, 2> e;
-    e.col(0) = row(x, t[1]) - row(x, t[0]);
-    e.col(1) = row(x, t[2]) - row(x, t[0]);
-    const Eigen::Matrix<double, 3, 2> def = e * r.r0_inv;   // 3x2 deformation gradient
+    const Vec x0 = row(x, t[0]);
+    const Vec e1 = row(x, t[1]) - x0;
+    const Vec e2 = row(x, t[2]) - x0;
+    // 3x2 deformation gradient F = [e1 e2] R0^-1 (R0^-1 is upper triangular: the rest frame has e1 along its axis)
+    const Vec f0 = e1 * r.r0_inv(0, 0);
+    const Vec f1 = e1 * r.r0_inv(0, 1) + e2 * r.r0_inv(1, 1);
+    Eigen::Matrix2d c;
+    c << f0.squaredNorm(), f0.dot(f1), f0.dot(f1), f1.squaredNorm();
     Eigen::Vector2d eig;
     Eigen::Matrix2d v;
-    sym2_eigen(def.transpose() * def, eig, v);
+    sym2_eigen(c, eig, v);
     const double s1 = std::sqrt(std::max(eig[0], 1e-300));
     const double s2 = std::sqrt(std::max(eig[1], 1e-300));
     const Eigen::Vector2d d = area_projection(s1, s2);
     energy += r.area0 * (0.5 * (f(s1) + f(s2)) - f_rest + 0.5 * w * ((s1 - d[0]) * (s1 - d[0]) + (s2 - d[1]) * (s2 - d[1])));
-    // dE/dF = F V diag(c_i) V^T with c_i = dE/ds_i / s_i
-    const Eigen::Vector2d c{r.area0 * (0.5 * df(s1) + w * (s1 - d[0])) / s1,
-                            r.area0 * (0.5 * df(s2) + w * (s2 - d[1])) / s2};
-    const Eigen::Matrix<double, 3, 2> h = def * (v * c.asDiagonal() * v.transpose()) * r.r0_inv.transpose();
-    gradient.row(t[1]) += h.col(0).transpose();
-    gradient.row(t[2]) += h.col(1).transpose();
-    gradient.row(t[0]) -= (h.col(0) + h.col(1)).transpose();
+    // dE/dF = F V diag(c_i) V^T with c_i = dE/ds_i / s_i; the vertex forces are dE/dF R0^-T
+    const double c1 = r.area0 * (0.5 * df(s1) + w * (s1 - d[0])) / s1;
+    const double c2 = r.area0 * (0.5 * df(s2) + w * (s2 - d[1])) / s2;
+    const double m00 = c1 * v(0, 0) * v(0, 0) + c2 * v(0, 1) * v(0, 1);
+    const double m01 = c1 * v(0, 0) * v(1, 0) + c2 * v(0, 1) * v(1, 1);
+    const double m11 = c1 * v(1, 0) * v(1, 0) + c2 * v(1, 1) * v(1, 1);
+    const Vec p0 = f0 * m00 + f1 * m01;
+    const Vec p1 = f0 * m01 + f1 * m11;
+    const Vec h0 = p0 * r.r0_inv(0, 0) + p1 * r.r0_inv(0, 1);
+    const Vec h1 = p1 * r.r0_inv(1, 1);
+    for (int k = 0; k < 3; ++k) {
+      gradient(t[1], k) += h0[k];
+      gradient(t[2], k) += h1[k];
+      gradient(t[0], k) -= h0[k] + h1[k];
+    }
   }
   return energy;
 }
@@ -145,7 +160,10 @@ double MembraneEnergy::bending_terms(const Positions& x, Positions& gradient) co
     const Vec proj = len > 1e-300 ? Vec(kx * (h.rest_norm / len)) : Vec::Zero();
     const Vec residual = kx - proj;
     energy += 0.5 * h.weight * residual.squaredNorm();
-    for (int j = 0; j < 4; ++j) gradient.row(h.v[j]) += (h.weight * h.k[j]) * residual.transpose();
+    for (int j = 0; j < 4; ++j) {
+      const double wk = h.weight * h.k[j];
+      for (int k = 0; k < 3; ++k) gradient(h.v[j], k) += wk * residual[k];
+    }
   }
   return energy;
 }
@@ -166,12 +184,34 @@ void MembraneEnergy::volume_area_gradients(const Positions& x, Positions& grad_v
 }
 
 double MembraneEnergy::global_terms(const Positions& x, Positions& gradient) {
-  volume_area_gradients(x, grad_volume_, grad_area_);
-  const double dv = volume(x) - rest_volume_;
-  const double da = area(x) - rest_area_;
   const double kv = moduli_.volume_modulus_pN_um2 > 0.0 ? moduli_.volume_modulus_pN_um2 / rest_volume_ : 0.0;
   const double ka = moduli_.global_area_pN_um > 0.0 ? moduli_.global_area_pN_um / rest_area_ : 0.0;
-  gradient += (kv * dv) * grad_volume_ + (ka * da) * grad_area_;
+  if (kv == 0.0 && ka == 0.0) return 0.0;
+  // One pass for V, A and their gradients (as volume(), area() and volume_area_gradients(), summed in one loop).
+  grad_volume_.setZero(x.rows(), 3);
+  grad_area_.setZero(x.rows(), 3);
+  double volume6 = 0.0;
+  double area2 = 0.0;
+  for (const auto& t : triangles_) {
+    const Vec a = row(x, t[0]), b = row(x, t[1]), c = row(x, t[2]);
+    const Vec bc = b.cross(c);
+    volume6 += a.dot(bc);
+    const Vec normal = (b - a).cross(c - a);
+    const double twice_area = normal.norm();
+    area2 += twice_area;
+    const Vec n = normal / twice_area;
+    const Vec gv[3] = {bc, c.cross(a), a.cross(b)};
+    const Vec ga[3] = {n.cross(c - b), n.cross(a - c), n.cross(b - a)};
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) {
+        grad_volume_(t[j], k) += gv[j][k];
+        grad_area_(t[j], k) += ga[j][k];
+      }
+    }
+  }
+  const double dv = volume6 / 6.0 - rest_volume_;
+  const double da = 0.5 * area2 - rest_area_;
+  gradient += (kv * dv / 6.0) * grad_volume_ + (0.5 * ka * da) * grad_area_;
   return 0.5 * kv * dv * dv + 0.5 * ka * da * da;
 }
 

@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: MIT
 // npFEM minimisation: L-BFGS with the constant proxy as initial inverse Hessian (Liu, Bouaziz & Kavan 2017) and
 // the plain projective-dynamics iteration, both with the convergence tests of Palabos-npFEM (reference §3.3).
+// The L-BFGS pairs persist from step to step (LbfgsMemory in the solver's workspace).
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <utility>
-#include <vector>
 
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
-#include "resolved/membrane/npfem_solver.hpp"
+#include "resolved/membrane/npfem_workspace.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -40,39 +39,6 @@ bool objective_stalled(std::deque<double>& history, double value) {
   return *hi - *lo <= objective_rel_tol * std::max(1.0, std::abs(value));
 }
 
-/// The last m (s, y) pairs of L-BFGS and the two-loop recursion (Nocedal & Wright 2006, Alg. 7.4) with the
-/// prefactored proxy as the initial inverse Hessian (Liu et al. 2017).
-class LbfgsHistory {
- public:
-  explicit LbfgsHistory(int m) : m_(m) {}
-  void clear() { s_.clear(), y_.clear(), rho_.clear(); }
-  [[nodiscard]] bool empty() const { return s_.empty(); }
-  /// Keeps the pair only if its curvature s.y is positive (otherwise the update would not be positive definite).
-  void push(Positions s, Positions y) {
-    const double sy = dot(s, y);
-    if (!(sy > 1e-16 * std::sqrt(dot(s, s) * dot(y, y)))) return;
-    s_.push_back(std::move(s)), y_.push_back(std::move(y)), rho_.push_back(1.0 / sy);
-    if (static_cast<int>(s_.size()) > m_) s_.pop_front(), y_.pop_front(), rho_.pop_front();
-  }
-  template <typename InverseProxy>
-  [[nodiscard]] Positions direction(const Positions& g, const InverseProxy& apply_h0_inverse) const {
-    Positions q = g;
-    std::vector<double> alpha(s_.size());
-    for (int k = static_cast<int>(s_.size()) - 1; k >= 0; --k) {
-      alpha[k] = rho_[k] * dot(s_[k], q);
-      q -= alpha[k] * y_[k];
-    }
-    Positions r = apply_h0_inverse(q);
-    for (std::size_t k = 0; k < s_.size(); ++k) r += (alpha[k] - rho_[k] * dot(y_[k], r)) * s_[k];
-    return -r;
-  }
-
- private:
-  int m_;
-  std::deque<Positions> s_, y_;
-  std::deque<double> rho_;
-};
-
 }  // namespace
 
 NpfemSolver::LineSearchResult NpfemSolver::line_search(const Positions& x, const Positions& d, const Positions& y,
@@ -80,20 +46,20 @@ NpfemSolver::LineSearchResult NpfemSolver::line_search(const Positions& x, const
   double step = 1.0;
   double ft = 0.0;
   for (int j = 0; j <= settings_.line_search_halvings; ++j, step *= 0.5) {
-    xt = x + step * d;
+    xt.noalias() = x + step * d;
     ft = objective(xt, y, gt);
     if (std::isfinite(ft) && ft <= fx + armijo_c1 * step * gd && dot(gt, d) >= curvature_c2 * gd) return {ft, true};
   }
   return {ft, false};
 }
 
-NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y) {
+NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y, Positions& g, double fx) {
   NpfemStepReport report;
   const double tol = settings_.gradient_tolerance * force_scale_pN_;
-  Positions g, gt, xt;
-  double fx = objective(x, y, g);
   require_finite(fx, 0);
-  LbfgsHistory history(settings_.lbfgs_history);
+  Workspace& w = *work_;
+  LbfgsMemory& history = w.history;   // kept from the previous steps
+  const LbfgsMemory::InverseProxy h0_inverse = [this](const Positions& q, Positions& out) { apply_inverse_proxy(q, out); };
   std::deque<double> f_hist;
   report.stop_reason = "max_iterations";
   while (true) {
@@ -103,14 +69,15 @@ NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y) {
       break;
     }
     if (report.iterations >= settings_.max_iterations) break;
-    Positions d = history.direction(g, [this](const Positions& q) { return apply_inverse_proxy(q); });
-    double gd = dot(g, d);
+    history.direction(g, h0_inverse, w.dir);
+    double gd = dot(g, w.dir);
     if (!(gd < 0.0)) {   // not a descent direction: restart from the proxy step
       history.clear();
-      d = -apply_inverse_proxy(g);
-      gd = dot(g, d);
+      apply_inverse_proxy(g, w.dir);
+      w.dir = -w.dir;
+      gd = dot(g, w.dir);
     }
-    const LineSearchResult ls = line_search(x, d, y, fx, gd, xt, gt);
+    const LineSearchResult ls = line_search(x, w.dir, y, fx, gd, w.xt, w.gt);
     ++report.iterations;
     if (!ls.accepted) {
       ++report.stagnations;
@@ -124,9 +91,11 @@ NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y) {
       }
     }
     require_finite(ls.objective, report.iterations);
-    history.push(xt - x, gt - g);
-    x = xt;
-    g = gt;
+    w.s.noalias() = w.xt - x;
+    w.yk.noalias() = w.gt - g;
+    history.push(w.s, w.yk);
+    x.swap(w.xt);
+    g.swap(w.gt);
     fx = ls.objective;
     if (objective_stalled(f_hist, fx)) {
       report.converged = true;
@@ -142,12 +111,10 @@ NpfemStepReport NpfemSolver::minimise(Positions& x, const Positions& y) {
   return report;
 }
 
-NpfemStepReport NpfemSolver::projective_dynamics(Positions& x, const Positions& y) {
+NpfemStepReport NpfemSolver::projective_dynamics(Positions& x, const Positions& y, Positions& g, double fx) {
   NpfemStepReport report;
   const double tol = settings_.gradient_tolerance * force_scale_pN_;
-  Positions g;
   std::deque<double> f_hist;
-  double fx = objective(x, y, g);
   report.stop_reason = "max_iterations";
   while (true) {
     require_finite(fx, report.iterations);
@@ -157,7 +124,8 @@ NpfemStepReport NpfemSolver::projective_dynamics(Positions& x, const Positions& 
       break;
     }
     if (report.iterations >= settings_.max_iterations) break;
-    x -= apply_inverse_proxy(g);   // local projections are inside g; this is the global solve
+    apply_inverse_proxy(g, work_->dir);   // local projections are inside g; this is the global solve
+    x -= work_->dir;
     fx = objective(x, y, g);
     ++report.iterations;
     if (objective_stalled(f_hist, fx)) {

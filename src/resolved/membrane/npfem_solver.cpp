@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "resolved/membrane/npfem_workspace.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -84,6 +85,9 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   if (proxy_.info() != Eigen::Success || damped_mass_solver_.info() != Eigen::Success) {
     throw hs::common::NumericalError("npFEM: the Hessian proxy is not positive definite (check the mesh and moduli)");
   }
+  work_ = std::make_unique<Workspace>(settings.lbfgs_history, n);
+  work_->proxy = BlockedLdlt(proxy_);
+  work_->damped_mass = BlockedLdlt(damped_mass_solver_);
   // Rank-2 Woodbury correction for the global volume and area energies, from their rest gradients.
   Positions gv, ga;
   energy_->volume_area_gradients(Positions(x_um_.rowwise() - c), gv, ga);
@@ -108,22 +112,24 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
 
 NpfemSolver::~NpfemSolver() = default;
 
-Positions NpfemSolver::apply_inverse_proxy(const Positions& g) const {
-  Positions r = proxy_.solve(g);
-  if (woodbury_rank_ == 0) return r;
+void NpfemSolver::apply_inverse_proxy(const Positions& g, Positions& out) const {
+  work_->proxy.solve(g, out);
+  if (woodbury_rank_ == 0) return;
   Eigen::Vector2d ut = Eigen::Vector2d::Zero();
-  for (int a = 0; a < woodbury_rank_; ++a) ut[a] = dot(woodbury_u_[a], r);
+  for (int a = 0; a < woodbury_rank_; ++a) ut[a] = dot(woodbury_u_[a], out);
   const Eigen::Vector2d coef = woodbury_core_inv_ * ut;
-  for (int a = 0; a < woodbury_rank_; ++a) r -= coef[a] * woodbury_z_[a];
-  return r;
+  for (int a = 0; a < woodbury_rank_; ++a) out -= coef[a] * woodbury_z_[a];
 }
 
 double NpfemSolver::objective(const Positions& x, const Positions& y, Positions& gradient) {
   const double e = energy_->evaluate(x, gradient);
-  const Positions d = x - y;
-  const Positions md = damped_mass_ * d;
-  gradient += md / (h_us_ * h_us_);
-  return e + 0.5 * dot(d, md) / (h_us_ * h_us_);
+  Positions& d = work_->d;
+  Positions& md = work_->md;
+  d.noalias() = x - y;
+  md.noalias() = damped_mass_ * d;
+  const double inv_h2 = 1.0 / (h_us_ * h_us_);
+  gradient += inv_h2 * md;
+  return e + 0.5 * inv_h2 * dot(d, md);
 }
 
 double NpfemSolver::max_row_norm(const Positions& g) const { return g.rowwise().norm().maxCoeff(); }
@@ -146,12 +152,17 @@ void NpfemSolver::clear_external_forces() { f_ext_pN_.setZero(); }
 NpfemStepReport NpfemSolver::step() {
   const Eigen::RowVector3d c = x_um_.colwise().mean();   // work about the centroid (conditioning)
   const Positions xn = x_um_.rowwise() - c;
-  const Positions rhs = mass_fg_ * v_um_us_ + h_us_ * f_ext_pN_;
-  const Positions y = xn + h_us_ * Positions(damped_mass_solver_.solve(rhs));
-  Positions gx, gy;
-  Positions x = objective(xn, y, gx) <= objective(y, y, gy) ? xn : y;   // the better start of the two
+  Workspace& w = *work_;
+  w.rhs.noalias() = mass_fg_ * v_um_us_ + h_us_ * f_ext_pN_;
+  w.damped_mass.solve(w.rhs, w.dir);
+  const Positions y = xn + h_us_ * w.dir;
+  Positions x, g;
+  const double fx = start(xn, y, x, g);
   const NpfemStepReport report =
-      settings_.iteration == NpfemIteration::lbfgs ? minimise(x, y) : projective_dynamics(x, y);
+      settings_.iteration == NpfemIteration::lbfgs ? minimise(x, y, g, fx) : projective_dynamics(x, y, g, fx);
+  w.correction[1].swap(w.correction[0]);
+  w.correction[0].noalias() = x - y;
+  w.corrections = std::min(w.corrections + 1, 2);
   Positions v = (x - xn) / h_us_;
   relax_velocity(v, x);
   x = xn + h_us_ * v;
@@ -163,6 +174,27 @@ NpfemStepReport NpfemSolver::step() {
   stats_.iterations += report.iterations;
   if (!report.converged) ++stats_.unconverged_steps;
   return report;
+}
+
+double NpfemSolver::start(const Positions& xn, const Positions& y, Positions& x, Positions& g) {
+  const Workspace& w = *work_;
+  Positions g_other;
+  const double f_xn = objective(xn, y, g);
+  const bool predict = w.corrections == 2;
+  // The correction x* - y = -h^2 M~^-1 grad E(x*) follows the elastic forces, which change slowly from step to step:
+  // extrapolate it linearly. x_n stays a candidate: it is the safe start where that fails (long quasi-static steps).
+  if (predict) {
+    x.noalias() = y + 2.0 * w.correction[0] - w.correction[1];
+  } else {
+    x = y;
+  }
+  const double f_other = objective(x, y, g_other);
+  if (f_xn <= f_other) {   // the better start of the two
+    x = xn;
+    return f_xn;
+  }
+  g.swap(g_other);
+  return f_other;
 }
 
 void NpfemSolver::relax_velocity(Positions& v, const Positions& x) const {
@@ -253,12 +285,17 @@ std::vector<double> NpfemSolver::state() const {
       for (int a = 0; a < 3; ++a) out.push_back((*p)(i, a));
   }
   for (int a = 0; a < 3; ++a) out.push_back(center_target_um_[a]);
+  out.push_back(static_cast<double>(work_->corrections));
+  for (int k = 0; k < work_->corrections; ++k)
+    for (Eigen::Index i = 0; i < x_um_.rows(); ++i)
+      for (int a = 0; a < 3; ++a) out.push_back(work_->correction[k](i, a));
+  work_->history.save(out);
   return out;
 }
 
 void NpfemSolver::restore_state(std::span<const double> state) {
   const auto n = static_cast<std::size_t>(x_um_.rows());
-  if (state.size() != 9 * n + 3) throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh");
+  if (state.size() < 9 * n + 3) throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh");
   std::size_t k = 0;
   for (Positions* p : {&x_um_, &v_um_us_, &f_ext_pN_}) {
     p->resize(static_cast<Eigen::Index>(n), 3);
@@ -266,6 +303,27 @@ void NpfemSolver::restore_state(std::span<const double> state) {
       for (int a = 0; a < 3; ++a) (*p)(i, a) = state[k++];
   }
   for (int a = 0; a < 3; ++a) center_target_um_[a] = state[k++];
+  restore_memory(state.subspan(k));
+}
+
+void NpfemSolver::restore_memory(std::span<const double> memory) {
+  Workspace& w = *work_;
+  w.corrections = 0;
+  w.history.clear();
+  if (memory.empty()) return;   // a state without the solver memory: start afresh
+  const auto n = static_cast<std::size_t>(x_um_.rows());
+  const auto corrections = static_cast<int>(memory[0]);
+  if (corrections < 0 || corrections > 2 || memory.size() < 1 + 3 * n * static_cast<std::size_t>(corrections)) {
+    throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh or solver");
+  }
+  std::size_t k = 1;
+  for (int c = 0; c < corrections; ++c)
+    for (Eigen::Index i = 0; i < x_um_.rows(); ++i)
+      for (int a = 0; a < 3; ++a) w.correction[c](i, a) = memory[k++];
+  if (w.history.restore(memory.subspan(k)) != memory.size() - k) {
+    throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh or solver");
+  }
+  w.corrections = corrections;
 }
 
 }  // namespace hs::resolved

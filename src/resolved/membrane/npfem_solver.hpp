@@ -43,6 +43,10 @@ struct NpfemStatistics {
 /// once; or by the plain projective-dynamics local/global iteration x <- x - H0^-1 grad g (which, for the PD terms,
 /// is exactly Bouaziz et al. 2014's global solve after the local projections). After convergence the velocity is
 /// relaxed towards the rigid-body motion by C_alpha (viscoelasticity, reference §3.3 step 6).
+/// Speed (the minimiser is unchanged): a step starts from the better of x_n and y + c, with c the corrections x* - y
+/// of the two previous steps linearly extrapolated (until two steps are done: the better of x_n and y); the L-BFGS
+/// pairs are kept from step to step (the Hessian of g changes little between steps); both are in state(), so a
+/// resumed run is bit for bit the uninterrupted one.
 /// Interface in SI; internally um, us, fg (force pN), as Palabos-npFEM.
 class NpfemSolver {
  public:
@@ -65,9 +69,11 @@ class NpfemSolver {
   /// Moves the whole cell rigidly (placing it in a domain).
   void translate_m(const hs::common::Vec3& shift_m);
 
-  /// Checkpoint state (flat): positions, velocities and external forces of every vertex, and the centre target.
+  /// Checkpoint state (flat): positions, velocities and external forces of every vertex, the centre target, then the
+  /// solver's memory (start predictor, L-BFGS pairs) so that a resumed run repeats the uninterrupted one bit for bit.
   [[nodiscard]] std::vector<double> state() const;
-  /// Restores state() of a solver built from the same mesh and settings; throws std::invalid_argument on a size mismatch.
+  /// Restores state() of a solver built from the same mesh and settings (a state without the solver memory is
+  /// accepted and starts it empty); throws std::invalid_argument on a size mismatch.
   void restore_state(std::span<const double> state);
 
   [[nodiscard]] int vertex_count() const { return static_cast<int>(x_um_.rows()); }
@@ -91,13 +97,18 @@ class NpfemSolver {
     double objective;
     bool accepted;
   };
+  struct Workspace;   // preallocated buffers, the blocked proxy back-solve, the L-BFGS memory, the start predictor
   double objective(const Positions& x, const Positions& y, Positions& gradient);
   /// Backtracking alpha = 1, 1/2, ... until the Armijo and curvature (Wolfe) conditions hold; xt, gt: last trial.
   LineSearchResult line_search(const Positions& x, const Positions& d, const Positions& y, double fx, double gd,
                                Positions& xt, Positions& gt);
-  Positions apply_inverse_proxy(const Positions& g) const;
-  NpfemStepReport minimise(Positions& x, const Positions& y);
-  NpfemStepReport projective_dynamics(Positions& x, const Positions& y);
+  void apply_inverse_proxy(const Positions& g, Positions& out) const;
+  /// The start of the minimisation (see the class comment); returns g(x) and writes its gradient into g.
+  void restore_memory(std::span<const double> memory);
+  double start(const Positions& xn, const Positions& y, Positions& x, Positions& g);
+  /// Both start from x with gradient g and objective fx (already evaluated) and leave the minimiser in x.
+  NpfemStepReport minimise(Positions& x, const Positions& y, Positions& g, double fx);
+  NpfemStepReport projective_dynamics(Positions& x, const Positions& y, Positions& g, double fx);
   void relax_velocity(Positions& v, const Positions& x) const;
   void apply_center_constraint();
   void check_state(const Positions& x, const Positions& v) const;
@@ -124,6 +135,7 @@ class NpfemSolver {
   Eigen::Vector3d center_target_um_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d center_axis_ = Eigen::Vector3d::UnitX();
   NpfemStatistics stats_;
+  std::unique_ptr<Workspace> work_;
 };
 
 }  // namespace hs::resolved

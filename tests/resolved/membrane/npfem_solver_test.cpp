@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The npFEM solver: rest state without creep, Newton's second law for a rigid push, centre constraints,
-// PD fallback vs L-BFGS, and a diverging solve stopping with NumericalError instead of NaN.
+// PD fallback vs L-BFGS, a bit-for-bit checkpoint round trip, and a diverging solve stopping with NumericalError.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -132,4 +132,29 @@ TEST(NpfemSolver, NonFiniteForceOrBlowUpStopsWithNumericalErrorNeverNaN) {
   for (const auto& p : solver.positions_m()) {   // ... or it survives; in no case are NaNs handed out
     EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
   }
+}
+
+TEST(NpfemSolver, RestoredStateContinuesBitForBit) {
+  // The state holds the start predictor and the L-BFGS pairs, so a restored solver repeats the original exactly.
+  const TriangleMesh mesh = make_rbc_mesh({.vertex_count = 66});
+  std::vector<Vec3> f(mesh.vertices_m.size());
+  f[0] = Vec3{20e-12, 5e-12, 0.0};
+  f[5] = Vec3{-20e-12, 0.0, 3e-12};
+  NpfemSolver a(mesh, MembraneParameters{}, NpfemSettings{}, lb_step_s);
+  a.set_external_forces_N(f);
+  for (int s = 0; s < 20; ++s) (void)a.step();
+  NpfemSolver b(mesh, MembraneParameters{}, NpfemSettings{}, lb_step_s);
+  b.restore_state(a.state());
+  for (int s = 0; s < 20; ++s) {
+    const auto ra = a.step();
+    const auto rb = b.step();
+    EXPECT_EQ(ra.iterations, rb.iterations);
+  }
+  EXPECT_EQ(max_distance_m(a.positions_m(), b.positions_m()), 0.0);
+  // A state without the solver memory (positions, velocities, forces, centre target only) is still accepted.
+  std::vector<double> bare = a.state();
+  bare.resize(9 * mesh.vertices_m.size() + 3);
+  NpfemSolver c(mesh, MembraneParameters{}, NpfemSettings{}, lb_step_s);
+  EXPECT_NO_THROW(c.restore_state(bare));
+  EXPECT_EQ(max_distance_m(a.positions_m(), c.positions_m()), 0.0);
 }
