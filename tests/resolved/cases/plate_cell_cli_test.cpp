@@ -25,7 +25,10 @@ int run(const std::string& args, std::string* output = nullptr) {
 }
 
 fs::path write_variant(const std::string& folder, const std::string& name, const std::string& from, const std::string& to) {
-  return hs::test::write_case_variant(folder, "plate_cell_" + name, from, to);
+  // The folder is part of the name: ctest -j runs the shear and migration tests at the same time.
+  std::string tag = folder;
+  for (char& ch : tag) ch = ch == '/' ? '_' : ch;
+  return hs::test::write_case_variant(folder, "plate_cell_" + tag + "_" + name, from, to);
 }
 
 nlohmann::json summary(const fs::path& out) {
