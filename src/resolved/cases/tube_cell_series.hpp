@@ -33,7 +33,7 @@ class TubeCellSeries {
   TubeCellSeries(const TubeCellConfig& config, double cell_volume_m3);
   void add(const TubeCellSample& sample);
   [[nodiscard]] std::vector<double> row(const TubeCellSample& sample) const;
-  /// Whether DI and Cd have settled over settle_periods whole periods (measure/periodic_signal), or are steady
+  /// Whether DI (lift set-up) or Cd (drag set-up) has settled over settle_periods whole periods (measure/periodic_signal), or is steady
   /// within settle_spread over steady_window_s().
   [[nodiscard]] bool settled() const;
   /// Period averages, flow mode and dimensionless groups for summary.json "results".
