@@ -61,6 +61,8 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
   }
   numerics.derived("time_step_s", n.dt_s);
   numerics.derived("tau", n.collision.tau);
+  numerics.derived("lattice_velocity", n.lattice_velocity);          // lowered if tau hit max_tau
+  numerics.derived("membrane_mass_factor", n.membrane_mass_factor);  // 0 in the input means 1.25 nu_lu k
 }
 
 }  // namespace hs::resolved
