@@ -71,9 +71,10 @@ TEST(CoupledCell, FixedCellBalancesTheBodyForce) {
               driving, ibm, ibm / driving, traction, traction / driving);
   // At steady state the IBM force must balance the drive exactly; 2% allows for the remaining transient.
   EXPECT_NEAR(ibm / driving, 1.0, 0.02);
-  // The tractions act on the surface through the sample nodes (~2 lu out), so they carry the IBM force minus the
-  // drive on the fluid inside that surface (~5 % of this box) minus the kernel's spread beyond the samples; 0.8 is
-  // measured. Taking the membrane's own areas instead gives 0.3-0.5 (docs/resolved-coupling.md): 0.7 tells the two apart.
+  // The default tractions are scaled to the area of the surface through the sample nodes (~2 lu out), so they carry
+  // about the IBM force minus the drive on the fluid inside that surface (~5 % of this box) minus the kernel's
+  // spread beyond the samples; 0.79 is measured. The membrane's own areas give 0.3-0.5 (docs/resolved-coupling.md):
+  // 0.7 tells the two apart.
   EXPECT_GT(traction / driving, 0.7);
   EXPECT_LT(common::norm(s->membrane->centroid_m() - c0) / kDx, 1e-9);
 }
