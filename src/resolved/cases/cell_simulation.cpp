@@ -35,6 +35,16 @@ bool checkpoint_due(common::CheckpointSchedule& schedule, int rank) {
 
 }  // namespace
 
+nlohmann::json membrane_solve_summary(const NpfemStatistics& stats) {
+  const auto per = [](double a, long b) { return b > 0 ? a / static_cast<double>(b) : 0.0; };
+  return {{"steps", stats.steps},
+          {"iterations_per_step", per(static_cast<double>(stats.iterations), stats.steps)},
+          {"unconverged_steps", stats.unconverged_steps},
+          {"line_search_stops", stats.line_search_stops},
+          {"iteration_cap_stops", stats.iteration_cap_stops},
+          {"unconverged_mean_gradient_over_tolerance", per(stats.unconverged_gradient_sum, stats.unconverged_steps)}};
+}
+
 TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis) {
   TriangleMesh mesh = build_membrane_mesh(membrane);
   for (auto& v : mesh.vertices_m) {

@@ -9,6 +9,8 @@
 #include <span>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "common/io/checkpoint.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/io/vtk_polydata.hpp"
@@ -44,6 +46,9 @@ void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const Membran
                       const common::Vec3& centroid_m);
 
 /// The coupled stages of one lattice step, in Palabos-npFEM order (resolved-methods.md 2.3), named for the timers.
+/// The membrane solver's convergence record for summary.json: steps, iterations per step, unconverged steps and why.
+[[nodiscard]] nlohmann::json membrane_solve_summary(const NpfemStatistics& stats);
+
 void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s);
 
 /// Smooth switch-on 0 -> 1 over `steps` steps, (1 - cos(pi step / steps)) / 2: a sudden drive at large tau overshoots

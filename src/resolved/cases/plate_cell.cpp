@@ -152,6 +152,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   summary["wall_s_per_simulated_ms"] = ctx.wall_seconds() / (1e3 * simulated_s);
   summary["stage_timings"] = loop.timings();
   summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
+  summary["membrane_solve"] = membrane_solve_summary(r.membrane->statistics());
   ctx.write_summary(summary);
   return 0;
 }

@@ -179,6 +179,7 @@ int run_tube_cell(const common::CaseRequest& request) {
   summary["wall_s_per_simulated_ms"] = ctx.wall_seconds() / (1e3 * r.units.to_si_time(static_cast<double>(loop.step())));
   summary["stage_timings"] = loop.timings();
   summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
+  summary["membrane_solve"] = membrane_solve_summary(r.membrane->statistics());
   ctx.write_summary(summary);
   return settled ? 0 : 1;
 }

@@ -172,7 +172,12 @@ NpfemStepReport NpfemSolver::step() {
   apply_center_constraint();
   ++stats_.steps;
   stats_.iterations += report.iterations;
-  if (!report.converged) ++stats_.unconverged_steps;
+  if (!report.converged) {
+    ++stats_.unconverged_steps;
+    if (report.stop_reason == "line_search") ++stats_.line_search_stops;
+    if (report.stop_reason == "max_iterations") ++stats_.iteration_cap_stops;
+    stats_.unconverged_gradient_sum += report.gradient_max_N * pN_per_N / (settings_.gradient_tolerance * force_scale_pN_);
+  }
   return report;
 }
 
