@@ -97,7 +97,12 @@ nlohmann::json PlateCellSeries::shear_results() const {
     phase.push_back(s.marker_phase_rad);
     di.push_back(s.di);
   }
-  const FlowMode mode = classify_flow_mode(incl, phase);
+  // The mode is read after the release transient (the second half, as the means below): a tank-treading cell released
+  // edge-on first turns to its inclination, which the whole-run angle range would count as swinging.
+  const std::size_t from = first_settled(samples_.size());
+  const FlowMode mode = samples_.size() < 2 || from + 1 >= samples_.size()
+                            ? classify_flow_mode(incl, phase)
+                            : classify_flow_mode(std::span(incl).subspan(from), std::span(phase).subspan(from));
   const TumblingPeriod tumble = tumbling_period(t, incl);
   const double jeffery = jeffery_period(config_.shear_rate_1_s);
   r["flow_mode"] = to_string(mode);
@@ -105,7 +110,6 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["tumbling_half_turns"] = tumble.half_turns;
   r["jeffery_period_s"] = jeffery;
   r["tumbling_period_over_jeffery"] = tumble.period_s / jeffery;
-  const std::size_t from = first_settled(samples_.size());
   if (samples_.size() < 2 || from + 1 >= samples_.size()) return r;
   // Mean inclination and DI over the second half; the marker's mean angular rate there is the tank-treading rate.
   double sum_incl = 0.0, sum_di = 0.0;
