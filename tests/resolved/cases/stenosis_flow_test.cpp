@@ -37,7 +37,7 @@ std::string with(std::string text, const std::string& from, const std::string& t
 /// The shipped 5.5 um case, 10 um wide (the plasma flow does not depend on z), with `throat` as the throat line and
 /// the wall rule `wall` ("bouzidi", the default, or "half_way").
 StenosisCellConfig plasma_case(const std::string& throat, const std::string& wall = "bouzidi") {
-  std::string toml = with(shipped("stenosis/throat-5.5um"), "width_m = 15.0e-6", "width_m = 10.0e-6");
+  std::string toml = with(shipped("stenosis/throat-5.5um"), "width_m = 16.0e-6", "width_m = 10.0e-6");
   toml = with(toml, "throat_height_m = 5.5e-6", throat);
   toml = with(toml, "max_tau = 12.5", "max_tau = 12.5\nwall = \"" + wall + "\"");
   auto file = common::ConfigFile::parse(toml, "case.toml");
