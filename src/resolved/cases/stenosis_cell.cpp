@@ -86,7 +86,14 @@ double min_wall_gap_m(const StenosisRun& r, std::span<const Vec3> x) {
   return gap;
 }
 
-StenosisSample sample_state(const StenosisRun& r, double time_s) {
+/// Sums over the steps of one sample interval (reset after each sample; samples fall on checkpoints).
+struct ForceSums {
+  double ibm_x_lu = 0.0;
+  double traction_x_N = 0.0;
+  long steps = 0;
+};
+
+StenosisSample sample_state(const StenosisRun& r, double time_s, const ForceSums& sums) {
   const auto x = r.membrane->positions_m();
   const CellShape shape = measure_cell_shape(x);
   StenosisSample s;
@@ -99,6 +106,9 @@ StenosisSample sample_state(const StenosisRun& r, double time_s) {
   s.min_wall_gap_m = min_wall_gap_m(r, x);
   s.wall_force_N = r.repulsion->last_total_N();
   s.wall_contacts = r.repulsion->last_vertices();
+  const double n = static_cast<double>(std::max(1L, sums.steps));
+  s.ibm_force_x_N = r.units.to_si_force(sums.ibm_x_lu / n);
+  s.traction_x_N = sums.traction_x_N / n;
   s.flow_rate_m2_s = mean_flow_rate_m2_s(*r.lattice, r.units, r.c.width_m);   // collective
   for (const auto& v : r.membrane->velocities_m_s()) s.velocity_x_m_s += v.x;
   s.velocity_x_m_s /= static_cast<double>(x.size());
@@ -155,14 +165,22 @@ int run_stenosis(const common::CaseRequest& request) {
   common::TimeLoop loop(max_steps, first_step);
   loop.add("body_force_ramp", [&] { r.lattice->set_body_force({drive_lu(r, loop.step()), 0.0, 0.0}); });
   add_coupled_stages(loop, r);
+  ForceSums sums;
+  loop.add("force_accumulate", [&] {
+    sums.ibm_x_lu += r.cell->report().forcing.total_force_lu.x;
+    sums.traction_x_N += r.cell->report().fluid_force_N.x;
+    ++sums.steps;
+  });
   const long frame_every = c.vtk_every_s > 0.0 ? r.units.to_lattice_steps(c.vtk_every_s) : 0;
   loop.every(frame_every, "write_frames", [&] { out.write_frame(r, ctx, frame); });
   common::Progress progress("stenosis", max_steps, ctx.show_progress() && !request.quiet);
   const SampledRunHooks hooks{.sample =
                                   [&] {
-                                    const auto s = sample_state(r, r.units.to_si_time(static_cast<double>(loop.step())));
+                                    const auto s =
+                                        sample_state(r, r.units.to_si_time(static_cast<double>(loop.step())), sums);
                                     series.add(s);
                                     out.row(series.row(s));
+                                    sums = {};
                                   },
                               .done = [&] { return series.passed(); },
                               .pack = [&] { return series.pack(); }};

@@ -10,7 +10,7 @@
 namespace hs::resolved {
 namespace {
 
-constexpr std::size_t kPackedFields = 14;
+constexpr std::size_t kPackedFields = 16;
 
 nlohmann::json station(const StenosisSample& s, double throat_x_m) {
   return {{"time_s", s.time_s}, {"centroid_x_m", s.centroid_m.x}, {"x_minus_throat_m", s.centroid_m.x - throat_x_m},
@@ -21,12 +21,14 @@ nlohmann::json station(const StenosisSample& s, double throat_x_m) {
 
 std::vector<std::string> StenosisSeries::columns() {
   return {"time_s", "centroid_x_m", "centroid_y_m", "centroid_z_m", "d_x", "d_y", "d_z", "di", "front_x_m",
-          "min_wall_gap_m", "wall_force_N", "wall_contacts", "flow_rate_m2_s", "velocity_x_m_s"};
+          "min_wall_gap_m", "wall_force_N", "wall_contacts", "ibm_force_x_N", "traction_x_N", "flow_rate_m2_s",
+          "velocity_x_m_s"};
 }
 
 std::vector<double> StenosisSeries::row(const StenosisSample& s) const {
   return {s.time_s, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z, s.d.x, s.d.y, s.d.z, s.di, s.front_x_m,
-          s.min_wall_gap_m, s.wall_force_N, static_cast<double>(s.wall_contacts), s.flow_rate_m2_s, s.velocity_x_m_s};
+          s.min_wall_gap_m, s.wall_force_N, static_cast<double>(s.wall_contacts), s.ibm_force_x_N, s.traction_x_N,
+          s.flow_rate_m2_s, s.velocity_x_m_s};
 }
 
 std::vector<double> StenosisSeries::pack() const {
@@ -45,7 +47,8 @@ void StenosisSeries::unpack(std::span<const double> flat) {
     const double* v = flat.data() + k;
     samples_.push_back({.time_s = v[0], .centroid_m = {v[1], v[2], v[3]}, .d = {v[4], v[5], v[6]}, .di = v[7],
                         .front_x_m = v[8], .min_wall_gap_m = v[9], .wall_force_N = v[10],
-                        .wall_contacts = static_cast<int>(v[11]), .flow_rate_m2_s = v[12], .velocity_x_m_s = v[13]});
+                        .wall_contacts = static_cast<int>(v[11]), .ibm_force_x_N = v[12], .traction_x_N = v[13],
+                        .flow_rate_m2_s = v[14], .velocity_x_m_s = v[15]});
   }
 }
 

@@ -23,6 +23,8 @@ struct StenosisSample {
   double min_wall_gap_m = 0.0;      // smallest signed distance of a vertex inside the fluid (< 0: in the wall)
   double wall_force_N = 0.0;        // total membrane-wall repulsion at the last membrane step (sum of |F_v|)
   int wall_contacts = 0;            // vertices it pushed
+  double ibm_force_x_N = 0.0;       // IBM force spread on the fluid along x, mean over the sample interval
+  double traction_x_N = 0.0;        // fluid traction on the membrane along x, mean over the sample interval
   double flow_rate_m2_s = 0.0;      // measured flow rate per width of the box
   double velocity_x_m_s = 0.0;      // mean vertex velocity along x
 };
