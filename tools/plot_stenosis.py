@@ -3,6 +3,8 @@
 # D_x, D_y, D_z (= L_i / 7.82 um) of one stenosis run vs time and vs the centroid's distance from the throat, with
 # the constriction shaded and the wall height h(x) drawn (the seed paper's figure 7).
 # Usage: /usr/bin/python3 tools/plot_stenosis.py RUN_DIR [OUT.png]   (RUN_DIR holds timeseries.csv, summary.json)
+#        /usr/bin/python3 tools/plot_stenosis.py RUN_DIR RUN_DIR... OUT.png   (runs overlaid vs centroid x, e.g. two
+#        repulsion settings; each labelled with its folder name)
 import csv
 import json
 import math
@@ -22,7 +24,42 @@ def wall_height(s, big_h, throat, length):
     return big_h - 0.5 * (big_h - throat) * (1.0 + math.cos(2.0 * math.pi * s / length))
 
 
+def load(run):
+    with open(os.path.join(run, "timeseries.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(run, "summary.json")) as f:
+        summary = json.load(f)
+    return rows, summary["results"]
+
+
+def compare(runs, out):
+    """D_x, D_y, D_z of several runs against the centroid's distance from the throat."""
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    styles = ("-", "--", ":", "-.")
+    for k, run in enumerate(runs):
+        rows, res = load(run)
+        x_throat = res["throat"]["centroid_x_m"] - res["throat"]["x_minus_throat_m"]
+        s_um = [1e6 * (float(r["centroid_x_m"]) - x_throat) for r in rows]
+        name = os.path.basename(os.path.normpath(run))
+        for key, label, colour in (("d_x", "D_x", "tab:red"), ("d_y", "D_y", "tab:blue"), ("d_z", "D_z", "tab:green")):
+            ax.plot(s_um, [float(r[key]) for r in rows], color=colour, ls=styles[k % len(styles)], lw=1.2,
+                    label=f"{label} {name}")
+    _, res = load(runs[0])
+    ax.axvspan(-0.5e6 * res["constriction_length_m"], 0.5e6 * res["constriction_length_m"], color="0.9")
+    ax.axvline(0.0, color="k", ls="--", lw=0.8)
+    ax.set_xlabel("centroid x - x_throat (um); constriction shaded")
+    ax.set_ylabel("D_i = L_i / 7.82 um")
+    ax.legend(loc="best", fontsize=7, ncol=2)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(out)
+
+
 def main():
+    if len(sys.argv) > 3:
+        compare(sys.argv[1:-1], sys.argv[-1])
+        return
     run = sys.argv[1]
     out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(run, "stenosis_d.png")
     with open(os.path.join(run, "timeseries.csv"), newline="") as f:
