@@ -133,6 +133,29 @@ nlohmann::json plasma_summary(const StenosisCellConfig& c, const PlasmaFlow& pla
           {"plane_flow_rate_spread", (*hi - *lo) / plasma.mean_flow_rate_m2_s}, {"steps", plasma.steps}};
 }
 
+/// summary.json: the series' results, the plasma calibration and the run's numerics and cost.
+nlohmann::json summary_of(const StenosisRun& r, const StenosisSeries& series, const PlasmaFlow& plasma,
+                          const common::TimeLoop& loop, double wall_s) {
+  const StenosisCellConfig& c = r.c;
+  const double simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
+  nlohmann::json summary;
+  summary["results"] = series.results();
+  summary["plasma_calibration"] = plasma_summary(c, plasma);
+  summary["dx_m"] = c.numerics.dx_m;
+  summary["dt_s"] = c.numerics.dt_s;
+  summary["tau"] = c.numerics.collision.tau;
+  summary["membrane_mass_factor"] = c.numerics.membrane_mass_factor;
+  summary["wall_repulsion_range_m"] = c.repulsion.range_m;
+  summary["wall_repulsion_stiffness_N_m"] = c.repulsion.stiffness_N_m;
+  summary["spin_up_steps"] = c.spin_up_steps;
+  summary["steps"] = loop.step();
+  summary["simulated_time_s"] = simulated_s;
+  summary["wall_s_per_simulated_ms"] = wall_s / (1e3 * simulated_s);
+  summary["stage_timings"] = loop.timings();
+  summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
+  return summary;
+}
+
 }  // namespace
 
 int run_stenosis(const common::CaseRequest& request) {
@@ -190,22 +213,7 @@ int run_stenosis(const common::CaseRequest& request) {
   ctx.log().info("{} after {} steps ({:.4g} s simulated); wall time per stage:\n{}",
                  passed ? "passed stop_x_m" : "stopped at max_time_s (NOT past stop_x_m)", loop.step(), simulated_s,
                  loop.timing_table());
-  nlohmann::json summary;
-  summary["results"] = series.results();
-  summary["plasma_calibration"] = plasma_summary(c, plasma);
-  summary["dx_m"] = c.numerics.dx_m;
-  summary["dt_s"] = c.numerics.dt_s;
-  summary["tau"] = c.numerics.collision.tau;
-  summary["membrane_mass_factor"] = c.numerics.membrane_mass_factor;
-  summary["wall_repulsion_range_m"] = c.repulsion.range_m;
-  summary["wall_repulsion_stiffness_N_m"] = c.repulsion.stiffness_N_m;
-  summary["spin_up_steps"] = c.spin_up_steps;
-  summary["steps"] = loop.step();
-  summary["simulated_time_s"] = simulated_s;
-  summary["wall_s_per_simulated_ms"] = ctx.wall_seconds() / (1e3 * simulated_s);
-  summary["stage_timings"] = loop.timings();
-  summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
-  ctx.write_summary(summary);
+  ctx.write_summary(summary_of(r, series, plasma, loop, ctx.wall_seconds()));
   return passed || request.quick ? 0 : 1;
 }
 
