@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 #include <mpi.h>
@@ -55,7 +56,8 @@ TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis) 
 }
 
 void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const MembraneConfig& membrane, const CellNumerics& n,
-                      const Vec3& centroid_m) {
+                      const Vec3& centroid_m,
+                      std::function<void(std::span<const Vec3>, std::vector<Vec3>&)> add_forces_N) {
   MembraneParameters material = membrane.material;
   material.density_kg_m3 *= n.membrane_mass_factor;
   s.membrane = std::make_unique<NpfemSolver>(mesh, material, membrane.solver, n.membrane_every * n.dt_s);
@@ -63,7 +65,8 @@ void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const Membran
   s.cell = std::make_unique<CoupledCell>(*s.lattice, *s.membrane, s.units,
                                          CouplingSettings{.ibm = n.ibm, .membrane_every = n.membrane_every,
                                                           .median_filter = true, .traction_area = n.traction_area,
-                                                          .lattice_origin_m = s.origin_m});
+                                                          .lattice_origin_m = s.origin_m,
+                                                          .add_forces_N = std::move(add_forces_N)});
 }
 
 void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s) {

@@ -41,9 +41,11 @@ struct CellSimulation {
 [[nodiscard]] TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis);
 
 /// Creates the npFEM solver (material density scaled by n.membrane_mass_factor, step membrane_every dt) with its
-/// centroid at `centroid_m`, then the CoupledCell (median filter on, as Palabos-npFEM).
+/// centroid at `centroid_m`, then the CoupledCell (median filter on, as Palabos-npFEM). `add_forces_N`, if given, adds
+/// forces to the fluid traction before each membrane step (CouplingSettings::add_forces_N).
 void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const MembraneConfig& membrane, const CellNumerics& n,
-                      const common::Vec3& centroid_m);
+                      const common::Vec3& centroid_m,
+                      std::function<void(std::span<const common::Vec3>, std::vector<common::Vec3>&)> add_forces_N = {});
 
 /// The coupled stages of one lattice step, in Palabos-npFEM order (resolved-methods.md 2.3), named for the timers.
 /// The membrane solver's convergence record for summary.json: steps, iterations per step, unconverged steps and why.

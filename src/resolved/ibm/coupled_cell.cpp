@@ -56,6 +56,7 @@ void CoupledCell::membrane_solve() {
   }
   report_.vertices_without_fluid = t.vertices_without_fluid;
   report_.sample_distance_lu = t.mean_sample_distance_lu;
+  if (settings_.add_forces_N) settings_.add_forces_N(membrane_.positions_m(), f_N);
   membrane_.set_external_forces_N(f_N);
   membrane_.step();
   const auto v = membrane_.velocities_m_s();

@@ -2,6 +2,8 @@
 // One membrane immersed in the lattice fluid: the coupled time step of Palabos-npFEM (resolved-methods.md 2.3).
 #pragma once
 
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "common/units/unit_converter.hpp"
@@ -18,6 +20,9 @@ struct CouplingSettings {
   bool median_filter = true;       // Palabos-npFEM FILTERING is on (resolved-methods.md 1.4 step 6)
   TractionArea traction_area = TractionArea::scaled_membrane;   // see fluid_traction.hpp
   common::Vec3 lattice_origin_m;   // SI position of global lattice node (0, 0, 0)
+  /// Optional forces added to the fluid traction before each membrane step, e.g. a membrane-wall repulsion:
+  /// (vertex positions in SI, unwrapped; the external forces in newtons, to add to). Empty: none.
+  std::function<void(std::span<const common::Vec3>, std::vector<common::Vec3>&)> add_forces_N{};
 };
 
 /// Diagnostics of the last coupled step.
