@@ -37,6 +37,53 @@ void aa_update_nodes(const AaStreamCollideArgs& a, const std::array<const double
   }
 }
 
+/// Pointer tables of the neighbour step for a node at the low (x = 0) and/or high (x = nx - 1) end of a periodic
+/// row: the directions that cross the face read and write the image at the other end instead of the ghost.
+struct EdgeTables {
+  std::array<const double*, C::q> in;
+  std::array<double*, C::q> out;
+};
+
+EdgeTables edge_tables(const std::array<const double*, C::q>& in, const std::array<double*, C::q>& out,
+                       std::ptrdiff_t nx, bool low, bool high) {
+  EdgeTables t{in, out};
+  for (std::size_t i = 0; i < C::q; ++i) {
+    const int cx = C::c[i][0];
+    // Reads come from x - c_i, writes go to x + c_i.
+    if (low && cx == 1) t.in[i] += nx;
+    if (low && cx == -1) t.out[i] += nx;
+    if (high && cx == -1) t.in[i] -= nx;
+    if (high && cx == 1) t.out[i] -= nx;
+  }
+  return t;
+}
+
+template <bool kForceField>
+void aa_update_run(const AaStreamCollideArgs& a, const std::array<const double*, C::q>& in,
+                   const std::array<double*, C::q>& out, const std::array<EdgeTables, 3>& edges, FluidRun run) {
+  std::ptrdiff_t begin = run.begin;
+  std::ptrdiff_t end = run.begin + run.length;
+  if (a.wrap_x > 0) {
+    const std::ptrdiff_t ghost = (a.stride_y - a.wrap_x) / 2;
+    const std::ptrdiff_t x0 = begin % a.stride_y - ghost;
+    const bool low = x0 == 0;
+    const bool high = x0 + run.length == a.wrap_x;
+    if (low && high && run.length == 1) {
+      aa_update_nodes<kForceField>(a, edges[2].in, edges[2].out, begin, begin + 1);
+      return;
+    }
+    if (low) {
+      aa_update_nodes<kForceField>(a, edges[0].in, edges[0].out, begin, begin + 1);
+      ++begin;
+    }
+    if (high) {
+      aa_update_nodes<kForceField>(a, edges[1].in, edges[1].out, end - 1, end);
+      --end;
+    }
+  }
+  aa_update_nodes<kForceField>(a, in, out, begin, end);
+}
+
 }  // namespace
 
 void aa_stream_collide(const AaStreamCollideArgs& a, AaStep step) {
@@ -52,15 +99,20 @@ void aa_stream_collide(const AaStreamCollideArgs& a, AaStep step) {
       out[i] = a.f + i * a.volume + a.offset[i];
     }
   }
+  AaStreamCollideArgs args = a;
+  if (step == AaStep::local) args.wrap_x = 0;   // the local step touches only the node itself
+  const std::array<EdgeTables, 3> edges{edge_tables(in, out, args.wrap_x, true, false),
+                                        edge_tables(in, out, args.wrap_x, false, true),
+                                        edge_tables(in, out, args.wrap_x, true, true)};
   const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
   const bool has_field = a.force_field != nullptr;
 #pragma omp parallel for schedule(static) if (a.threaded)
   for (std::ptrdiff_t r = 0; r < runs; ++r) {
     const FluidRun run = a.runs[static_cast<std::size_t>(r)];
     if (has_field) {
-      aa_update_nodes<true>(a, in, out, run.begin, run.begin + run.length);
+      aa_update_run<true>(args, in, out, edges, run);
     } else {
-      aa_update_nodes<false>(a, in, out, run.begin, run.begin + run.length);
+      aa_update_run<false>(args, in, out, edges, run);
     }
   }
 }

@@ -35,13 +35,18 @@ struct AaStreamCollideArgs {
   double omega_plus;                             // 1/tau+
   double omega_minus;                            // 1/tau- (= omega_plus for BGK)
   bool threaded;                                 // share the runs among OpenMP threads
+  /// > 0: x is periodic within this block of wrap_x interior nodes, and the neighbour step wraps its x reads and
+  /// writes into the interior instead of using the x ghosts (no x fill or fold needed). 0: no wrapping.
+  std::ptrdiff_t wrap_x = 0;
+  std::ptrdiff_t stride_y = 0;                   // linear offset of one node along y (with wrap_x > 0)
 };
 
 /// One AA step on every node of `runs`, with the same collision (trt_guo_collide) as stream_collide().
 /// pre:  local step: f in the natural layout on the run nodes. Neighbour step: f in the swapped layout on every
 ///       node the runs pull from (ghosts filled, wall slots set).
 /// post: the other layout on the run nodes; the neighbour step also writes the slots A[i][x + c_i] that lie on
-///       ghost or solid nodes (to be folded to their owners or bounced back).
+///       ghost or solid nodes (to be folded to their owners or bounced back). With wrap_x, x +- 1 beyond the block
+///       means the node at the other end of the row (the periodic image) in both reads and writes.
 void aa_stream_collide(const AaStreamCollideArgs& args, AaStep step);
 
 }  // namespace hs::resolved

@@ -49,8 +49,14 @@ void apply_wall_links(std::span<const WallLink> links, double* src, const double
 
 std::size_t AaLayout::slot(int j, std::ptrdiff_t y) const {
   const auto jj = static_cast<std::size_t>(j);
-  if (natural) return jj * volume + static_cast<std::size_t>(y + offset[jj]);
-  return static_cast<std::size_t>(D3Q19::opposite(j)) * volume + static_cast<std::size_t>(y);
+  std::ptrdiff_t node = natural ? y + offset[jj] : y;
+  if (wrap_x > 0) {
+    const std::ptrdiff_t x = node % stride_y - (stride_y - wrap_x) / 2;
+    if (x < 0) node += wrap_x;
+    if (x >= wrap_x) node -= wrap_x;
+  }
+  const std::size_t component = natural ? jj : static_cast<std::size_t>(D3Q19::opposite(j));
+  return component * volume + static_cast<std::size_t>(node);
 }
 
 void capture_link_odd_parts(std::span<const WallLink> links, const double* f, const AaLayout& layout,

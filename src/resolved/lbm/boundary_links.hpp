@@ -67,11 +67,14 @@ WallLink make_wall_link(const LinkSpec& spec);
 void apply_wall_links(std::span<const WallLink> links, double* src, const double* previous, std::size_t volume);
 
 /// Where the AA pattern keeps f*_j(y): A[opp(j)][y] in the swapped layout, A[j][y + c_j] in the natural one
-/// (see aa_stream_collide.hpp).
+/// (see aa_stream_collide.hpp); with wrap_x > 0 the node index is first wrapped into the block along x (the kernel
+/// then keeps no x ghosts).
 struct AaLayout {
   bool natural;
   std::size_t volume;                                  // component stride
   const std::ptrdiff_t* offset;                        // linear offsets of the 19 directions
+  std::ptrdiff_t wrap_x = 0;                           // as AaStreamCollideArgs::wrap_x
+  std::ptrdiff_t stride_y = 0;
   [[nodiscard]] std::size_t slot(int j, std::ptrdiff_t y) const;
 };
 

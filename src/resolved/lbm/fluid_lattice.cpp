@@ -41,12 +41,6 @@ FluidLattice::FluidLattice(const LatticeSpec& spec, MPI_Comm comm) : spec_(spec)
       if (ca == 1) halo_components_[a][1].push_back(i);
     }
   }
-  // AA, swapped layout: the high ghost of axis a is read at slots opp(i) of the directions with c_ia = -1, i.e. the
-  // slots with c_a = +1, which the high neighbour sends through its low face (and vice versa).
-  for (std::size_t a = 0; a < 3; ++a) {
-    aa_halo_components_[a][0] = halo_components_[a][1];
-    aa_halo_components_[a][1] = halo_components_[a][0];
-  }
 }
 
 void FluidLattice::set_shape(const common::Shape& shape, const ShapePlacement& placement, WallRule rule) {
@@ -100,10 +94,13 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
   links_need_odd_parts_ = std::any_of(links_.begin(), links_.end(), [](const WallLink& l) { return l.e != 0.0; });
   if (aa()) {
     dst_ = AlignedDoubles();
-    fold_ = std::make_unique<AaGhostFold>(*decomposition_, stride_);
+    aa_halo_ = std::make_unique<AaHalo>(*decomposition_, stride_, aa_wrap_x() > 0);
     link_odd_parts_.assign(links_.size(), 0.0);
-    // As the two-buffer scheme, whose `previous` buffer is the initial state before the first exchange.
-    capture_link_odd_parts(links_, src_.data(), aa_layout(), link_odd_parts_);
+    // As the two-buffer scheme, whose `previous` buffer is the initial state before the first exchange: ghosts
+    // hold f^eq of init() at their unwrapped positions, so no x wrapping here.
+    AaLayout raw = aa_layout();
+    raw.wrap_x = 0;
+    capture_link_odd_parts(links_, src_.data(), raw, link_odd_parts_);
   } else {
     dst_ = src_;
   }
@@ -161,7 +158,16 @@ void FluidLattice::stream_collide() {
 }
 
 AaLayout FluidLattice::aa_layout() const {
-  return AaLayout{.natural = steps_ % 2 == 1, .volume = stride_, .offset = offsets_.data()};
+  return AaLayout{.natural = steps_ % 2 == 1, .volume = stride_, .offset = offsets_.data(), .wrap_x = aa_wrap_x(),
+                  .stride_y = layout_.stride_y()};
+}
+
+/// Along a periodic x axis held by this rank alone, the AA kernel wraps x itself: the strided x-ghost copies (one
+/// cache line per value) are the costliest part of the ghost passes.
+std::ptrdiff_t FluidLattice::aa_wrap_x() const {
+  const bool self_periodic = decomposition_->neighbour(0, 0) == decomposition_->rank() &&
+                             decomposition_->neighbour(0, 1) == decomposition_->rank();
+  return self_periodic ? layout_.n[0] : 0;
 }
 
 /// Even steps_ (swapped layout) take a neighbour step, odd ones a local step.
@@ -177,7 +183,9 @@ void FluidLattice::aa_stream_collide() {
                           .force_stride = layout_.volume(),
                           .omega_plus = spec_.collision.omega_plus(),
                           .omega_minus = spec_.collision.omega_minus(),
-                          .threaded = fluid_nodes_ >= kMinNodesForThreads},
+                          .threaded = fluid_nodes_ >= kMinNodesForThreads,
+                          .wrap_x = aa_wrap_x(),
+                          .stride_y = layout_.stride_y()},
       steps_ % 2 == 0 ? AaStep::neighbour : AaStep::local);
   ++steps_;
 }
@@ -186,9 +194,9 @@ void FluidLattice::aa_stream_collide() {
 /// ghost slots it wrote back to their owners.
 void FluidLattice::aa_exchange() {
   if (steps_ % 2 == 0) {
-    halo_->exchange(src_, aa_halo_components_, stride_);
+    aa_halo_->fill(src_);
   } else {
-    fold_->fold(src_);
+    aa_halo_->fold(src_);
   }
 }
 

@@ -15,7 +15,7 @@
 #include "common/parallel/cartesian_decomposition.hpp"
 #include "common/parallel/halo_exchange.hpp"
 #include "common/vec3.hpp"
-#include "resolved/lbm/aa_ghost_fold.hpp"
+#include "resolved/lbm/aa_halo.hpp"
 #include "resolved/lbm/aa_stream_collide.hpp"
 #include "resolved/lbm/aligned_allocator.hpp"
 #include "resolved/lbm/boundary_links.hpp"
@@ -157,6 +157,7 @@ class FluidLattice {
   [[nodiscard]] bool aa() const { return spec_.streaming == Streaming::aa; }
   /// AA only: the layout of the buffer now (natural after an odd number of steps).
   [[nodiscard]] AaLayout aa_layout() const;
+  [[nodiscard]] std::ptrdiff_t aa_wrap_x() const;
   void aa_stream_collide();
   void aa_exchange();
   [[nodiscard]] unsigned char classify(const std::array<int, 3>& global) const;
@@ -189,10 +190,9 @@ class FluidLattice {
   std::vector<WallLink> links_;
   std::vector<double> link_odd_parts_;   // AA: pre-collision odd parts of the links' nodes (capture_link_odd_parts)
   bool links_need_odd_parts_ = false;    // some link has e != 0 (Bouzidi)
-  std::unique_ptr<AaGhostFold> fold_;    // AA: ghost-to-owner pass after neighbour steps
+  std::unique_ptr<AaHalo> aa_halo_;      // AA: ghost fill before neighbour steps, fold after them
   std::vector<OpenNode> open_nodes_;
   std::array<std::array<std::vector<int>, 2>, 3> halo_components_;
-  std::array<std::array<std::vector<int>, 2>, 3> aa_halo_components_;   // the swapped layout's: sides exchanged
   bool reduced_halo_ = true;
   long steps_ = 0;
 };

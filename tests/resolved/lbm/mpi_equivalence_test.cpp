@@ -110,7 +110,7 @@ TEST(MpiEquivalence, InletOutletChannelSplitAcrossTheFlow) {
   EXPECT_LT(diff, kTolerance);
 }
 
-// The AA pattern's ghost fill before neighbour steps and its fold after them (aa_ghost_fold.hpp), across ranks.
+// The AA pattern's ghost fill before neighbour steps and its fold after them (aa_halo.hpp), across ranks.
 // kSteps is even; the odd layout is covered by aa_pattern_test on one rank, which uses the same passes.
 TEST(MpiEquivalence, AaPatternBouzidiTubeSplitAcrossTheTube) {
   const common::Tube tube(common::TubeSpec{.start_m = {6.0, 6.0, -1.0}, .end_m = {6.0, 6.0, 7.0}, .radius_m = 4.3});
