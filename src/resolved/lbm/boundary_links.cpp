@@ -61,11 +61,14 @@ std::size_t AaLayout::slot(int j, std::ptrdiff_t y) const {
 
 void capture_link_odd_parts(std::span<const WallLink> links, const double* f, const AaLayout& layout,
                             std::span<double> odd_parts) {
-  for (std::size_t k = 0; k < links.size(); ++k) {
-    const WallLink& l = links[k];
+  const auto n = static_cast<std::ptrdiff_t>(links.size());
+#pragma omp parallel for schedule(static) if (n >= 65536)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const WallLink& l = links[static_cast<std::size_t>(k)];
     if (l.e == 0.0) continue;
     // f_i(x) = f*_i(x - c_i), f_-i(x) = f*_-i(x + c_i): the slots apply_wall_links reads from `previous`.
-    odd_parts[k] = 0.5 * (f[layout.slot(l.dir, l.behind)] - f[layout.slot(D3Q19::opposite(l.dir), l.target)]);
+    odd_parts[static_cast<std::size_t>(k)] =
+        0.5 * (f[layout.slot(l.dir, l.behind)] - f[layout.slot(D3Q19::opposite(l.dir), l.target)]);
   }
 }
 
