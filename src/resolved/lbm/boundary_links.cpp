@@ -47,6 +47,48 @@ void apply_wall_links(std::span<const WallLink> links, double* src, const double
   }
 }
 
+std::size_t AaLayout::slot(int j, std::ptrdiff_t y) const {
+  const auto jj = static_cast<std::size_t>(j);
+  std::ptrdiff_t node = natural ? y + offset[jj] : y;
+  if (wrap_x > 0) {
+    const std::ptrdiff_t x = node % stride_y - (stride_y - wrap_x) / 2;
+    if (x < 0) node += wrap_x;
+    if (x >= wrap_x) node -= wrap_x;
+  }
+  const std::size_t component = natural ? jj : static_cast<std::size_t>(D3Q19::opposite(j));
+  return component * volume + static_cast<std::size_t>(node);
+}
+
+void capture_link_odd_parts(std::span<const WallLink> links, const double* f, const AaLayout& layout,
+                            std::span<double> odd_parts) {
+  const auto n = static_cast<std::ptrdiff_t>(links.size());
+#pragma omp parallel for schedule(static) if (n >= 65536)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const WallLink& l = links[static_cast<std::size_t>(k)];
+    if (l.e == 0.0) continue;
+    // f_i(x) = f*_i(x - c_i), f_-i(x) = f*_-i(x + c_i): the slots apply_wall_links reads from `previous`.
+    odd_parts[static_cast<std::size_t>(k)] =
+        0.5 * (f[layout.slot(l.dir, l.behind)] - f[layout.slot(D3Q19::opposite(l.dir), l.target)]);
+  }
+}
+
+void apply_wall_links_aa(std::span<const WallLink> links, double* f, const AaLayout& layout,
+                         std::span<const double> odd_parts) {
+  const auto n = static_cast<std::ptrdiff_t>(links.size());
+  // As apply_wall_links: only tens of thousands of links are worth a parallel region.
+#pragma omp parallel for schedule(static) if (n >= 65536)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const WallLink& l = links[static_cast<std::size_t>(k)];
+    const int o = D3Q19::opposite(l.dir);
+    const double post_i = f[layout.slot(l.dir, l.node)];
+    const double post_o = f[layout.slot(o, l.node)];
+    const double odd_pre = l.e == 0.0 ? 0.0 : odd_parts[static_cast<std::size_t>(k)];
+    const double odd_change = odd_pre - 0.5 * (post_i - post_o);
+    f[layout.slot(o, l.target)] =
+        l.a * post_i + l.b * f[layout.slot(l.dir, l.second)] + l.c * post_o + l.d + l.e * odd_change;
+  }
+}
+
 void apply_open_boundaries(std::span<const OpenNode> nodes, double* src, std::size_t volume) {
   const auto vol = static_cast<std::ptrdiff_t>(volume);
   for (const OpenNode& b : nodes) {

@@ -66,6 +66,28 @@ WallLink make_wall_link(const LinkSpec& spec);
 /// fluid node pulls from across a wall holds its bounce-back value.
 void apply_wall_links(std::span<const WallLink> links, double* src, const double* previous, std::size_t volume);
 
+/// Where the AA pattern keeps f*_j(y): A[opp(j)][y] in the swapped layout, A[j][y + c_j] in the natural one
+/// (see aa_stream_collide.hpp); with wrap_x > 0 the node index is first wrapped into the block along x (the kernel
+/// then keeps no x ghosts).
+struct AaLayout {
+  bool natural;
+  std::size_t volume;                                  // component stride
+  const std::ptrdiff_t* offset;                        // linear offsets of the 19 directions
+  std::ptrdiff_t wrap_x = 0;                           // as AaStreamCollideArgs::wrap_x
+  std::ptrdiff_t stride_y = 0;
+  [[nodiscard]] std::size_t slot(int j, std::ptrdiff_t y) const;
+};
+
+/// The pre-collision odd part (f_i(x) - f_-i(x))/2 of each link's node for the coming step, read from the complete
+/// state before it (the AA pattern overwrites it in place; apply_wall_links reads it from the previous buffer).
+void capture_link_odd_parts(std::span<const WallLink> links, const double* f, const AaLayout& layout,
+                            std::span<double> odd_parts);
+
+/// apply_wall_links for the single AA buffer: the same values, written to and read from the slots of `layout`.
+/// `odd_parts` come from capture_link_odd_parts before the step (only read where a link's e != 0).
+void apply_wall_links_aa(std::span<const WallLink> links, double* f, const AaLayout& layout,
+                         std::span<const double> odd_parts);
+
 /// A ghost node on an open face, set by non-equilibrium extrapolation (Guo, Zheng & Shi 2002, Chinese Phys.
 /// 11:366): f*_i(ghost) = f^eq_i(rho_b, u_b) + [f*_i(inner) - f^eq_i(rho*, u*)(inner)], where rho*, u* are the
 /// moments of the inner node's post-collision populations. Velocity inlet: u_b given, rho_b = rho*(inner).

@@ -73,6 +73,10 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
   build_open_nodes();
   build_wall_links();
   reduced_halo_ = open_nodes_.empty();
+  if (aa() && !open_nodes_.empty()) {
+    throw std::invalid_argument("FluidLattice: open faces (velocity inlet, pressure outlet) are not supported with "
+                                "Streaming::aa; use Streaming::two_buffer");
+  }
   src_.assign(D3Q19::q * stride_, 0.0);
   for (std::size_t n = 0; n < layout_.volume(); ++n) {
     const auto g = global_of(static_cast<std::ptrdiff_t>(n));
@@ -80,11 +84,27 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
     if (init && flags_[n] != kShapeSolid && flags_[n] != kFaceSolid) {
       s = init(common::Vec3{static_cast<double>(g[0]), static_cast<double>(g[1]), static_cast<double>(g[2])});
     }
-    for (int i = 0; i < D3Q19::q; ++i) src_[static_cast<std::size_t>(i) * stride_ + n] = equilibrium(i, s.rho_lu, s.u_lu);
+    for (int i = 0; i < D3Q19::q; ++i) {
+      // AA starts in the swapped layout: f*_i(y) at A[opp(i)][y].
+      const int slot = aa() ? D3Q19::opposite(i) : i;
+      src_[static_cast<std::size_t>(slot) * stride_ + n] = equilibrium(i, s.rho_lu, s.u_lu);
+    }
   }
-  dst_ = src_;
-  complete_state();
   steps_ = 0;
+  links_need_odd_parts_ = std::any_of(links_.begin(), links_.end(), [](const WallLink& l) { return l.e != 0.0; });
+  if (aa()) {
+    dst_ = AlignedDoubles();
+    aa_halo_ = std::make_unique<AaHalo>(*decomposition_, stride_, aa_wrap_x() > 0);
+    link_odd_parts_.assign(links_.size(), 0.0);
+    // As the two-buffer scheme, whose `previous` buffer is the initial state before the first exchange: ghosts
+    // hold f^eq of init() at their unwrapped positions, so no x wrapping here.
+    AaLayout raw = aa_layout();
+    raw.wrap_x = 0;
+    capture_link_odd_parts(links_, src_.data(), raw, link_odd_parts_);
+  } else {
+    dst_ = src_;
+  }
+  complete_state();
 }
 
 void FluidLattice::complete_state() {
@@ -93,7 +113,9 @@ void FluidLattice::complete_state() {
 }
 
 void FluidLattice::exchange_halos() {
-  if (reduced_halo_) {
+  if (aa()) {
+    aa_exchange();
+  } else if (reduced_halo_) {
     halo_->exchange(src_, halo_components_, stride_);
   } else {
     halo_->exchange(src_, D3Q19::q, stride_);
@@ -101,6 +123,10 @@ void FluidLattice::exchange_halos() {
 }
 
 void FluidLattice::apply_boundaries() {
+  if (aa()) {
+    apply_wall_links_aa(links_, src_.data(), aa_layout(), link_odd_parts_);
+    return;
+  }
   apply_open_boundaries(open_nodes_, src_.data(), stride_);
   apply_wall_links(links_, src_.data(), dst_.data(), stride_);
 }
@@ -111,6 +137,10 @@ void FluidLattice::step() {
 }
 
 void FluidLattice::stream_collide() {
+  if (aa()) {
+    aa_stream_collide();
+    return;
+  }
   resolved::stream_collide(StreamCollideArgs{.src = src_.data(),
                                    .dst = dst_.data(),
                                    .volume = stride_,
@@ -125,6 +155,49 @@ void FluidLattice::stream_collide() {
                                              .threaded = fluid_nodes_ >= kMinNodesForThreads});
   std::swap(src_, dst_);
   ++steps_;
+}
+
+AaLayout FluidLattice::aa_layout() const {
+  return AaLayout{.natural = steps_ % 2 == 1, .volume = stride_, .offset = offsets_.data(), .wrap_x = aa_wrap_x(),
+                  .stride_y = layout_.stride_y()};
+}
+
+/// Along a periodic x axis held by this rank alone, the AA kernel wraps x itself: the strided x-ghost copies (one
+/// cache line per value) are the costliest part of the ghost passes.
+std::ptrdiff_t FluidLattice::aa_wrap_x() const {
+  const bool self_periodic = decomposition_->neighbour(0, 0) == decomposition_->rank() &&
+                             decomposition_->neighbour(0, 1) == decomposition_->rank();
+  return self_periodic ? layout_.n[0] : 0;
+}
+
+/// Even steps_ (swapped layout) take a neighbour step, odd ones a local step.
+void FluidLattice::aa_stream_collide() {
+  if (links_need_odd_parts_) capture_link_odd_parts(links_, src_.data(), aa_layout(), link_odd_parts_);
+  resolved::aa_stream_collide(
+      AaStreamCollideArgs{.f = src_.data(),
+                          .volume = stride_,
+                          .offset = offsets_,
+                          .runs = runs_,
+                          .body_force = body_force_,
+                          .force_field = force_field_.empty() ? nullptr : force_field_.data(),
+                          .force_stride = layout_.volume(),
+                          .omega_plus = spec_.collision.omega_plus(),
+                          .omega_minus = spec_.collision.omega_minus(),
+                          .threaded = fluid_nodes_ >= kMinNodesForThreads,
+                          .wrap_x = aa_wrap_x(),
+                          .stride_y = layout_.stride_y()},
+      steps_ % 2 == 0 ? AaStep::neighbour : AaStep::local);
+  ++steps_;
+}
+
+/// Swapped layout (before a neighbour step): fill the ghosts the step reads. Natural layout (after one): fold the
+/// ghost slots it wrote back to their owners.
+void FluidLattice::aa_exchange() {
+  if (steps_ % 2 == 0) {
+    aa_halo_->fill(src_);
+  } else {
+    aa_halo_->fold(src_);
+  }
 }
 
 bool FluidLattice::streaming_stores() const {
@@ -142,6 +215,8 @@ void FluidLattice::run(long steps) {
 
 double FluidLattice::population(int x, int y, int z, int i) const {
   const auto ii = static_cast<std::size_t>(i);
+  // f_i(x) = f*_i(x - c_i), wherever the scheme keeps it.
+  if (aa()) return src_[aa_layout().slot(i, index(x, y, z) - offsets_[ii])];
   return src_[ii * stride_ + static_cast<std::size_t>(index(x, y, z) - offsets_[ii])];
 }
 

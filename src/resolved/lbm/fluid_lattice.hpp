@@ -15,6 +15,8 @@
 #include "common/parallel/cartesian_decomposition.hpp"
 #include "common/parallel/halo_exchange.hpp"
 #include "common/vec3.hpp"
+#include "resolved/lbm/aa_halo.hpp"
+#include "resolved/lbm/aa_stream_collide.hpp"
 #include "resolved/lbm/aligned_allocator.hpp"
 #include "resolved/lbm/boundary_links.hpp"
 #include "resolved/lbm/collision_params.hpp"
@@ -26,13 +28,20 @@ namespace hs::resolved {
 /// How the kernel writes populations: `automatic` streams (non-temporal stores) when the arrays are far beyond cache.
 enum class StoreMode { automatic, ordinary, streaming };
 
+/// How populations stream. `two_buffer`: fused pull-stream + collide from one buffer into another (stream_collide.hpp).
+/// `aa`: the in-place AA pattern on one buffer (aa_stream_collide.hpp): half the memory, and no write-allocate
+/// traffic, so 19 + 19 doubles per node instead of 19 + 2 x 19 with ordinary stores. Supports periodic axes, MPI
+/// blocks, half-way and Bouzidi walls (also moving) and the force field; not open faces (initialize() throws).
+enum class Streaming { two_buffer, aa };
+
 struct LatticeSpec {
   std::array<int, 3> global_nodes{};       // nodes per axis of the whole lattice
   std::array<bool, 3> periodic{};          // periodic axes; other axes end in walls or open faces
   CollisionParams collision;
   std::array<int, 3> ranks_per_axis{};     // 0 = let MPI choose
   double rho0_lu = 1.0;                    // reference density (initial state, moving-wall term)
-  StoreMode store_mode = StoreMode::automatic;
+  StoreMode store_mode = StoreMode::automatic;   // two_buffer only
+  Streaming streaming = Streaming::two_buffer;
 };
 
 /// Where the lattice sits in the Shape's coordinates: global node (i, j, k) is at origin + spacing (i, j, k).
@@ -55,7 +64,8 @@ struct NodeInit {
 };
 
 /// The fluid solver. Populations are stored post-collision, structure-of-arrays, double precision, on the
-/// local block plus one ghost layer, in two buffers (pull scheme). Between steps the state is complete: the
+/// local block plus one ghost layer, in two buffers (pull scheme) or, with Streaming::aa, in one buffer whose layout
+/// alternates with the parity of steps_done() (AaLayout). Between steps the state is complete: the
 /// ghosts are exchanged and the wall/open-boundary slots set, so every pre-collision population
 /// f_i(x) = f*_i(x - c_i) can be read at any interior node (population(), moments(), viscous_stress()).
 /// Non-periodic faces are walls (half-way bounce-back, optionally moving) unless made open.
@@ -125,7 +135,7 @@ class FluidLattice {
   /// density outside [rho_min, rho_max] or Mach > mach_max at any fluid node of any rank. Collective.
   void check_health(const HealthLimits& limits = {}) const;
   /// Checkpoints: the complete state between steps is the current population buffer (interior, ghosts and wall
-  /// slots) plus the step count. restore_raw_populations() takes what raw_populations() gave on the same lattice
+  /// slots) plus the step count (whose parity gives the AA layout; restore only what the same scheme wrote). restore_raw_populations() takes what raw_populations() gave on the same lattice
   /// (same spec and decomposition, after initialize()); throws std::invalid_argument on a size mismatch.
   [[nodiscard]] std::span<const double> raw_populations() const { return {src_.data(), src_.size()}; }
   void restore_raw_populations(std::span<const double> f, long steps);
@@ -144,6 +154,12 @@ class FluidLattice {
   };
 
   [[nodiscard]] bool streaming_stores() const;
+  [[nodiscard]] bool aa() const { return spec_.streaming == Streaming::aa; }
+  /// AA only: the layout of the buffer now (natural after an odd number of steps).
+  [[nodiscard]] AaLayout aa_layout() const;
+  [[nodiscard]] std::ptrdiff_t aa_wrap_x() const;
+  void aa_stream_collide();
+  void aa_exchange();
   [[nodiscard]] unsigned char classify(const std::array<int, 3>& global) const;
   [[nodiscard]] common::Vec3 shape_point(const std::array<int, 3>& global) const;
   void classify_nodes();
@@ -172,6 +188,9 @@ class FluidLattice {
   std::vector<FluidRun> runs_;
   std::size_t fluid_nodes_ = 0;
   std::vector<WallLink> links_;
+  std::vector<double> link_odd_parts_;   // AA: pre-collision odd parts of the links' nodes (capture_link_odd_parts)
+  bool links_need_odd_parts_ = false;    // some link has e != 0 (Bouzidi)
+  std::unique_ptr<AaHalo> aa_halo_;      // AA: ghost fill before neighbour steps, fold after them
   std::vector<OpenNode> open_nodes_;
   std::array<std::array<std::vector<int>, 2>, 3> halo_components_;
   bool reduced_halo_ = true;

@@ -6,39 +6,26 @@
 
 #include <algorithm>
 
+#include "resolved/lbm/trt_guo_collision.hpp"
+
 namespace hs::resolved {
 namespace {
 
 using C = D3Q19;
 
-/// Updates nodes [begin, end). The loop body is straight-line code over the 19 directions, so the
-/// compiler unrolls it and vectorises along x.
-/// Updates nodes [begin, end), writing direction k of node n to out[k][n - out_shift].
+/// Updates nodes [begin, end), writing direction k of node n to out[k][n - out_shift]. The collision is inlined
+/// straight-line code over the 19 directions, so the loop vectorises along x.
 template <bool kForceField>
 void update_nodes(const StreamCollideArgs& a, const std::array<const double*, C::q>& pull,
                   const std::array<double*, C::q>& out, std::ptrdiff_t out_shift, std::ptrdiff_t begin,
                   std::ptrdiff_t end) {
-  const double wp = a.omega_plus;
-  const double wm = a.omega_minus;
-  const double sp = 1.0 - 0.5 * wp;
-  const double sm = 1.0 - 0.5 * wm;
+  const TrtRates rates = trt_rates(a.omega_plus, a.omega_minus);
   const std::ptrdiff_t vol = static_cast<std::ptrdiff_t>(a.force_stride);
 #pragma omp simd
   for (std::ptrdiff_t n = begin; n < end; ++n) {
     double f[C::q];
 #pragma GCC unroll 19
     for (int i = 0; i < C::q; ++i) f[i] = pull[static_cast<std::size_t>(i)][n];
-    double rho = 0.0;
-    double jx = 0.0;
-    double jy = 0.0;
-    double jz = 0.0;
-#pragma GCC unroll 19
-    for (int i = 0; i < C::q; ++i) {
-      rho += f[i];
-      jx += C::c[static_cast<std::size_t>(i)][0] * f[i];
-      jy += C::c[static_cast<std::size_t>(i)][1] * f[i];
-      jz += C::c[static_cast<std::size_t>(i)][2] * f[i];
-    }
     double fx = a.body_force.x;
     double fy = a.body_force.y;
     double fz = a.body_force.z;
@@ -47,29 +34,10 @@ void update_nodes(const StreamCollideArgs& a, const std::array<const double*, C:
       fy += a.force_field[vol + n];
       fz += a.force_field[2 * vol + n];
     }
-    const double inv_rho = 1.0 / rho;
-    const double ux = (jx + 0.5 * fx) * inv_rho;
-    const double uy = (jy + 0.5 * fy) * inv_rho;
-    const double uz = (jz + 0.5 * fz) * inv_rho;
-    const double usq = ux * ux + uy * uy + uz * uz;
-    const double uf = ux * fx + uy * fy + uz * fz;
-    const double feq0 = C::w0 * rho * (1.0 - 1.5 * usq);
-    out[0][n - out_shift] = f[0] - wp * (f[0] - feq0) + sp * C::w0 * (-3.0 * uf);
-#pragma GCC unroll 9
-    for (int k = 1; k <= C::half; ++k) {
-      const auto& c = C::c[static_cast<std::size_t>(k)];
-      const double w = C::w[static_cast<std::size_t>(k)];
-      const double cu = c[0] * ux + c[1] * uy + c[2] * uz;
-      const double cf = c[0] * fx + c[1] * fy + c[2] * fz;
-      const double feq_even = w * rho * (1.0 + 4.5 * cu * cu - 1.5 * usq);
-      const double feq_odd = w * rho * 3.0 * cu;
-      const double f_even = 0.5 * (f[k] + f[k + C::half]);
-      const double f_odd = 0.5 * (f[k] - f[k + C::half]);
-      const double post_even = f_even - wp * (f_even - feq_even) + sp * w * (9.0 * cu * cf - 3.0 * uf);
-      const double post_odd = f_odd - wm * (f_odd - feq_odd) + sm * w * 3.0 * cf;
-      out[static_cast<std::size_t>(k)][n - out_shift] = post_even + post_odd;
-      out[static_cast<std::size_t>(k + C::half)][n - out_shift] = post_even - post_odd;
-    }
+    double post[C::q];
+    trt_guo_collide(f, fx, fy, fz, rates, post);
+#pragma GCC unroll 19
+    for (int i = 0; i < C::q; ++i) out[static_cast<std::size_t>(i)][n - out_shift] = post[i];
   }
 }
 
