@@ -132,12 +132,20 @@ void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samp
   cp.meta()["step"] = step;
   cp.meta()["coupling_steps"] = st.steps;
   cp.meta()["frame"] = frame;
+  cp.meta()["streaming"] = s.lattice->streaming() == Streaming::aa ? "aa" : "two_buffer";   // the population layout differs between the two
   cp.write(ctx.folder().checkpoint_dir(), ctx.rank());
 }
 
 long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const common::RunContext& ctx, int& frame) {
   const common::Checkpoint cp = common::Checkpoint::read(ctx.folder().checkpoint_dir(), ctx.rank());
   const long step = cp.meta()["step"].get<long>();
+  const std::string written = cp.meta().value("streaming", std::string("two_buffer"));   // older checkpoints: two_buffer
+  const std::string running = s.lattice->streaming() == Streaming::aa ? "aa" : "two_buffer";
+  if (written != running) {
+    throw common::ConfigError(fmt::format("checkpoint in {}: written with [numerics] streaming = \"{}\", the case now "
+                                          "says \"{}\"; resume with the setting it was written with",
+                                          ctx.folder().checkpoint_dir().string(), written, running));
+  }
   s.lattice->restore_raw_populations(cp.doubles("populations"), step);
   const auto& field = cp.doubles("force_field");
   const std::span<double> target = s.lattice->force_field();

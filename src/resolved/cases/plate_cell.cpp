@@ -35,7 +35,8 @@ std::unique_ptr<PlateCellRun> build(const PlateCellConfig& c) {
   auto& r = *run;
   const double h_m = r.nodes[1] * n.dx_m;
   r.lattice = std::make_unique<FluidLattice>(
-      LatticeSpec{.global_nodes = r.nodes, .periodic = {true, false, true}, .collision = n.collision}, MPI_COMM_WORLD);
+      LatticeSpec{.global_nodes = r.nodes, .periodic = {true, false, true}, .collision = n.collision,
+                  .streaming = n.streaming}, MPI_COMM_WORLD);
   r.lattice->enable_force_field();
   if (c.flow == PlateFlow::shear) {
     // Started on the Couette profile: the wall speed is ~0.04 in lattice units at most, no start-up wave to fear.

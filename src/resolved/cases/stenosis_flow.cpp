@@ -32,7 +32,8 @@ StenosisGrid stenosis_grid(const StenosisCellConfig& c) {
 
 std::unique_ptr<FluidLattice> make_stenosis_lattice(const StenosisCellConfig& c, const StenosisGrid& grid) {
   auto lattice = std::make_unique<FluidLattice>(
-      LatticeSpec{.global_nodes = grid.nodes, .periodic = {true, false, true}, .collision = c.numerics.collision},
+      LatticeSpec{.global_nodes = grid.nodes, .periodic = {true, false, true}, .collision = c.numerics.collision,
+                  .streaming = c.numerics.streaming},
       MPI_COMM_WORLD);
   const common::StenosedChannel channel(c.channel());   // used by initialize() only
   lattice->set_shape(channel, ShapePlacement{.origin = grid.origin_m, .spacing = c.numerics.dx_m}, c.numerics.wall);

@@ -50,7 +50,8 @@ std::unique_ptr<TubeCellRun> build(const TubeCellConfig& c) {
   const common::Tube tube(common::TubeSpec{
       .start_m = {0.0, 0.0, -c.dx_m}, .end_m = {0.0, 0.0, c.length_m + c.dx_m}, .radius_m = c.radius_m});
   r.lattice = std::make_unique<FluidLattice>(
-      LatticeSpec{.global_nodes = r.nodes, .periodic = {false, false, true}, .collision = c.collision}, MPI_COMM_WORLD);
+      LatticeSpec{.global_nodes = r.nodes, .periodic = {false, false, true}, .collision = c.collision,
+                  .streaming = c.streaming}, MPI_COMM_WORLD);
   r.lattice->set_shape(tube, ShapePlacement{.origin = r.origin_m, .spacing = c.dx_m}, c.wall);
   // Poiseuille drive g = 4 nu U_max / R^2 (resolved-methods.md 1.3). The fluid starts at rest: starting from the
   // undisturbed profile stops it impulsively at the cell, whose pressure waves trip the Mach watchdog at

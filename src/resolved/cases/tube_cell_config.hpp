@@ -31,6 +31,7 @@ struct TubeCellConfig {
   double max_tau;
   CollisionParams collision;        // tau derived
   WallRule wall;
+  Streaming streaming = Streaming::two_buffer;
   int membrane_every;
   double membrane_mass_factor;      // numerical mass scaling of the membrane (see tube_cell_config.cpp)
   IbmSettings ibm;

@@ -110,6 +110,7 @@ class FluidLattice {
   [[nodiscard]] const common::CartesianDecomposition& decomposition() const { return *decomposition_; }
   [[nodiscard]] const common::BlockLayout& layout() const { return layout_; }
   [[nodiscard]] const CollisionParams& collision() const { return spec_.collision; }
+  [[nodiscard]] Streaming streaming() const { return spec_.streaming; }
   [[nodiscard]] std::array<int, 3> offset() const { return decomposition_->offset(); }
   [[nodiscard]] bool is_fluid(int x, int y, int z) const { return flags_[static_cast<std::size_t>(layout_.index(x, y, z))] == kFluid; }
   /// Pre-collision population f_i at a local interior node (ghost nodes are not valid arguments).
