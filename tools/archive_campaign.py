@@ -42,8 +42,10 @@ def main():
         shutil.copyfile(os.path.join(out, "summary.json"), os.path.join(dest, "summary.json"))
         with open(os.path.join(out, "timeseries.csv")) as f:
             lines = f.readlines()
-        with gzip.open(os.path.join(dest, "timeseries.csv.gz"), "wt") as f:
-            f.writelines(thin(lines))
+        # mtime=0: the same series gives the same bytes, so re-archiving leaves committed runs unchanged.
+        with open(os.path.join(dest, "timeseries.csv.gz"), "wb") as raw:
+            with gzip.GzipFile(fileobj=raw, mode="wb", mtime=0) as z:
+                z.write("".join(thin(lines)).encode())
     # One thread per run: CPU hours = the runs' wall hours (failed and retried attempts included).
     print(f"{done} runs archived in {archive}; {wall / 3600:.2f} CPU hours of finished or failed runs so far")
 
