@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "resolved/cases/case_text_helpers.hpp"
+
 namespace hs::test {
 
 struct CliResult {
@@ -35,17 +37,7 @@ inline CliResult run_hemoscale(const std::string& args) {
 /// fresh temporary folder named after `name`, which is returned.
 inline std::filesystem::path write_case_variant(const std::string& folder, const std::string& name,
                                                 const std::string& from, const std::string& to) {
-  namespace fs = std::filesystem;
-  std::ifstream in(fs::path(HS_SOURCE_DIR) / "cases/resolved" / folder / "case.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos != std::string::npos) text.replace(pos, from.size(), to);
-  const auto dir = fs::temp_directory_path() / ("hs_case_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.toml") << text;
-  return dir;
+  return write_case_text(name, replaced(shipped_case_text(folder), from, to));
 }
 
 }  // namespace hs::test

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "resolved/cases/case_text_helpers.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
 #include "resolved/measure/flow_mode.hpp"
@@ -17,18 +18,10 @@
 namespace hs::resolved {
 namespace {
 
-std::string shipped(const std::string& folder) {
-  std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/" + folder + "/case.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string shipped(const std::string& folder) { return test::shipped_case_text(folder); }
 
-std::string with(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos != std::string::npos) text.replace(pos, from.size(), to);
-  return text;
+std::string with(const std::string& text, const std::string& from, const std::string& to) {
+  return test::replaced(text, from, to);
 }
 
 PlateCellConfig read(const std::string& toml, PlateFlow flow) {

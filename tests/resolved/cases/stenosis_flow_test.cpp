@@ -8,30 +8,22 @@
 #include <cmath>
 #include <fstream>
 #include <numeric>
-#include <numeric>
 #include <sstream>
 #include <string>
 
 #include "common/config/config_file.hpp"
 #include "common/units/unit_converter.hpp"
+#include "resolved/cases/case_text_helpers.hpp"
 #include "resolved/cases/stenosis_cell_config.hpp"
 #include "resolved/cases/stenosis_flow.hpp"
 
 namespace hs::resolved {
 namespace {
 
-std::string shipped(const std::string& folder) {
-  std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/" + folder + "/case.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string shipped(const std::string& folder) { return test::shipped_case_text(folder); }
 
-std::string with(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  if (pos != std::string::npos) text.replace(pos, from.size(), to);
-  return text;
+std::string with(const std::string& text, const std::string& from, const std::string& to) {
+  return test::replaced(text, from, to);
 }
 
 /// The shipped 5.5 um case, 10 um wide (the plasma flow does not depend on z), with `throat` as the throat line and

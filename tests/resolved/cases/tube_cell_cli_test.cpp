@@ -129,20 +129,11 @@ TEST(TubeCellCli, TwoRanksGiveTheSameTimeSeriesAsOne) {
 /// The shipped drag case for `seconds`, with the membrane solve converged (so that round-off is not amplified by
 /// where L-BFGS stops at its iteration cap) and `extra_numerics` added to [numerics].
 fs::path drag_variant(const std::string& name, const std::string& seconds, const std::string& extra_numerics) {
-  std::ifstream in(fs::path(HS_SOURCE_DIR) / "cases/resolved/tube-drag/case.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"max_jeffery_periods = 6 ", "max_time_s = " + seconds + " "},
-                                 {"[membrane]", "[membrane]\nmax_iterations = 100\n"},
-                                 {"[numerics]", "[numerics]\n" + extra_numerics + "\n"}}) {
-    const auto pos = text.find(from);
-    if (pos == std::string::npos) throw std::runtime_error("tube-drag case.toml lacks " + from);
-    text.replace(pos, from.size(), to);
-  }
-  const auto dir = fs::temp_directory_path() / ("hs_tube_cell_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "case.toml") << text;
-  return dir;
+  std::string text = hs::test::shipped_case_text("tube-drag");
+  text = hs::test::replaced(text, "max_jeffery_periods = 6 ", "max_time_s = " + seconds + " ");
+  text = hs::test::replaced(text, "[membrane]", "[membrane]\nmax_iterations = 100\n");
+  text = hs::test::replaced(text, "[numerics]", "[numerics]\n" + extra_numerics + "\n");
+  return hs::test::write_case_text("tube_cell_" + name, text);
 }
 
 TEST(TubeCellCli, AaStreamingGivesTheTwoBufferTimeSeries) {
