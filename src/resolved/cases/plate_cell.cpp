@@ -148,6 +148,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   summary["dt_s"] = c.numerics.dt_s;
   summary["tau"] = c.numerics.collision.tau;
   summary["membrane_mass_factor"] = c.numerics.membrane_mass_factor;
+  summary["membrane_velocity_relaxation"] = r.membrane->velocity_relaxation();   // C_alpha per npFEM step
   summary["steps"] = loop.step();
   summary["simulated_time_s"] = simulated_s;
   summary["wall_s_per_simulated_ms"] = ctx.wall_seconds() / (1e3 * simulated_s);

@@ -145,6 +145,7 @@ nlohmann::json summary_of(const StenosisRun& r, const StenosisSeries& series, co
   summary["dt_s"] = c.numerics.dt_s;
   summary["tau"] = c.numerics.collision.tau;
   summary["membrane_mass_factor"] = c.numerics.membrane_mass_factor;
+  summary["membrane_velocity_relaxation"] = r.membrane->velocity_relaxation();   // C_alpha per npFEM step
   summary["wall_repulsion_range_m"] = c.repulsion.range_m;
   summary["wall_repulsion_stiffness_N_m"] = c.repulsion.stiffness_N_m;
   summary["spin_up_steps"] = c.spin_up_steps;

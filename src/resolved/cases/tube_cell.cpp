@@ -173,6 +173,7 @@ int run_tube_cell(const common::CaseRequest& request) {
   summary["dt_s"] = c.dt_s;
   summary["tau"] = c.collision.tau;
   summary["membrane_mass_factor"] = c.membrane_mass_factor;
+  summary["membrane_velocity_relaxation"] = r.membrane->velocity_relaxation();   // C_alpha per npFEM step
   summary["cell_stokes_number"] = cell_stokes_number(c, r.membrane->rest_volume_m3());
   summary["spin_up_steps"] = c.spin_up_steps;
   summary["steps"] = loop.step();

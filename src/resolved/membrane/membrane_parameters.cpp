@@ -21,7 +21,7 @@ MembraneParameters parse_material(hs::common::ConfigSection& s) {
   p.volume_modulus_Pa = s.positive_or("volume_modulus_Pa", d.volume_modulus_Pa);
   p.density_kg_m3 = s.positive_or("density_kg_m3", d.density_kg_m3);
   p.rayleigh_beta_s = s.non_negative_or("rayleigh_beta_s", d.rayleigh_beta_s);
-  p.viscoelastic_relaxation = s.number_in_or("viscoelastic_relaxation", 0.0, 1.0, d.viscoelastic_relaxation);
+  p.deformation_friction_Pa_s_m = s.non_negative_or("deformation_friction_Pa_s_m", d.deformation_friction_Pa_s_m);
   return p;
 }
 

@@ -36,8 +36,14 @@ struct MembraneParameters {
   double density_kg_m3 = 1125.0;
   /// Stiffness-proportional Rayleigh damping C = beta L: beta = 0.01 us in Palabos-npFEM flow runs (reference §3.1).
   double rayleigh_beta_s = 1.0e-8;
-  /// Post-step viscoelastic velocity relaxation C_alpha in [0, 1]: 0.9 in Palabos-npFEM (K2019 calibration).
-  double viscoelastic_relaxation = 0.9;
+  /// Friction per unit membrane area against non-rigid (deforming) motion, zeta_A: each vertex's velocity relative
+  /// to the rigid-body motion relaxes as m dv/dt = F - zeta_A A_v v (lumped area A_v). Palabos-npFEM applies this as
+  /// v += C_alpha (v_rigid - v) with C_alpha = 0.9 per npFEM step (K2019 calibration, reference §3.3 step 6), which
+  /// only means something at their step h = 0.25 us and physical density 1125 kg/m^3: that is
+  /// zeta_A = C_alpha / (1 - C_alpha) * rho (V / A) / h = 9 * 1125 * 0.697 um / 0.25 us = 2.82e4 Pa s/m (V / A of the
+  /// 7.82 um Evans-Fung cell). Stated per area and time, it no longer depends on the step, the lattice spacing or the
+  /// numerical mass factor (docs/resolved-coupling.md, "Membrane friction"). 0 gives a purely elastic membrane.
+  double deformation_friction_Pa_s_m = 2.82e4;
 };
 
 enum class NpfemIteration { lbfgs, projective_dynamics };

@@ -63,6 +63,11 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   v_um_us_.setZero(n, 3);
   f_ext_pN_.setZero(n, 3);
   mass_fg_ = material.density_kg_m3 * energy_->rest_volume() / n;   // 1 kg/m^3 = 1 fg/um^3
+  // Friction of a vertex times the step over its mass (SI): the backward-Euler step of m dv/dt = -zeta v is
+  // v <- v / (1 + zeta h / m), i.e. v += C (0 - v) with C = zeta h / (zeta h + m).
+  const double zeta_h_over_m = material.deformation_friction_Pa_s_m * energy_->rest_area() * 1e-12 / n *
+                               time_step_s / (mass_fg_ * 1e-18);
+  velocity_relaxation_ = zeta_h_over_m / (1.0 + zeta_h_over_m);
   double edge_sum = 0.0;
   double edge_max = 0.0;
   const auto edges = mesh_edges(rest_mesh);
@@ -203,7 +208,7 @@ double NpfemSolver::start(const Positions& xn, const Positions& y, Positions& x,
 }
 
 void NpfemSolver::relax_velocity(Positions& v, const Positions& x) const {
-  const double c_alpha = material_.viscoelastic_relaxation;
+  const double c_alpha = velocity_relaxation_;
   if (c_alpha <= 0.0) return;
   const Eigen::RowVector3d xc = x.colwise().mean();
   const Eigen::RowVector3d vc = v.colwise().mean();   // equal lumped masses

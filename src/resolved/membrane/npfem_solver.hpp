@@ -45,7 +45,8 @@ struct NpfemStatistics {
 /// the constant proxy H0 = M~/h^2 + L (+ a rank-2 Woodbury term for the global volume and area energies), factorised
 /// once; or by the plain projective-dynamics local/global iteration x <- x - H0^-1 grad g (which, for the PD terms,
 /// is exactly Bouaziz et al. 2014's global solve after the local projections). After convergence the velocity is
-/// relaxed towards the rigid-body motion by C_alpha (viscoelasticity, reference §3.3 step 6).
+/// relaxed towards the rigid-body motion by C_alpha = zeta h / (zeta h + m), the implicit step of the vertex friction
+/// zeta = zeta_A A / n (MembraneParameters::deformation_friction_Pa_s_m; viscoelasticity, reference §3.3 step 6).
 /// Speed (the minimiser is unchanged): a step starts from the better of x_n and y + c, with c the corrections x* - y
 /// of the two previous steps linearly extrapolated (until two steps are done: the better of x_n and y); the L-BFGS
 /// pairs are kept from step to step (the Hessian of g changes little between steps); both are in state(), so a
@@ -93,6 +94,8 @@ class NpfemSolver {
   [[nodiscard]] double rest_volume_m3() const;
   [[nodiscard]] double vertex_mass_kg() const;
   [[nodiscard]] double time_step_s() const { return h_us_ * 1e-6; }
+  /// The per-step relaxation C_alpha this step and vertex mass give the deformation friction (0 = elastic).
+  [[nodiscard]] double velocity_relaxation() const { return velocity_relaxation_; }
   [[nodiscard]] const NpfemStatistics& statistics() const { return stats_; }
 
  private:
@@ -122,6 +125,7 @@ class NpfemSolver {
   MembraneParameters material_;
   double h_us_;
   double mass_fg_;
+  double velocity_relaxation_;                  // C_alpha per step, from the deformation friction
   double force_scale_pN_;                       // G_s * mean rest edge: the elastic force of one vertex
   double max_edge_um_;                          // 20 x the longest rest edge: beyond it the solve has diverged
   Eigen::SparseMatrix<double> damped_mass_;     // M~ = M + h beta L  (fg)

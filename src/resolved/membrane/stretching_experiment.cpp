@@ -25,10 +25,10 @@ std::vector<int> end_patch(const TriangleMesh& mesh, double sign, double radius_
   return patch;
 }
 
-/// The steady state solves grad E(x) = F whatever the viscoelastic relaxation C_alpha (it only shapes the transient,
-/// and with C_alpha = 0.9 each step keeps a tenth of its deformation, so the march would take ~10x more steps).
+/// The steady state solves grad E(x) = F whatever the deformation friction (it only shapes the transient, and with
+/// the default each long quasi-static step would keep a small fraction of its deformation: many more steps).
 MembraneParameters quasi_static(MembraneParameters m) {
-  m.viscoelastic_relaxation = 0.0;
+  m.deformation_friction_Pa_s_m = 0.0;
   return m;
 }
 
