@@ -1,15 +1,12 @@
 # SPDX-License-Identifier: MIT
-# Stamps the version and git commit into every run summary (provenance, STYLE R12).
-execute_process(COMMAND git rev-parse --short=10 HEAD WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-                OUTPUT_VARIABLE HS_GIT_COMMIT OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-execute_process(COMMAND git status --porcelain --untracked-files=no WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-                OUTPUT_VARIABLE HS_GIT_STATUS OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-if(NOT HS_GIT_COMMIT)
-  set(HS_GIT_COMMIT "unknown")
-endif()
-if(HS_GIT_STATUS)
-  set(HS_GIT_DIRTY true)
-else()
-  set(HS_GIT_DIRTY false)
-endif()
-configure_file(${PROJECT_SOURCE_DIR}/src/common/build_info.hpp.in ${PROJECT_BINARY_DIR}/generated/build_info.hpp @ONLY)
+# Stamps the version and git commit into every run summary (provenance, STYLE R12): once now, and again at every
+# build (cmake/stamp_build_info.cmake), since a commit made after configuring must show in the next binary.
+set(HS_SOURCE_DIR ${PROJECT_SOURCE_DIR})
+set(HS_BINARY_DIR ${PROJECT_BINARY_DIR})
+include(${PROJECT_SOURCE_DIR}/cmake/stamp_build_info.cmake)
+add_custom_target(hs_build_info
+                  COMMAND ${CMAKE_COMMAND} -DHS_SOURCE_DIR=${PROJECT_SOURCE_DIR} -DHS_BINARY_DIR=${PROJECT_BINARY_DIR}
+                          -DPROJECT_VERSION=${PROJECT_VERSION} -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}
+                          -P ${PROJECT_SOURCE_DIR}/cmake/stamp_build_info.cmake
+                  BYPRODUCTS ${PROJECT_BINARY_DIR}/generated/build_info.hpp
+                  COMMENT "Stamping the git commit into build_info.hpp")
