@@ -49,10 +49,25 @@ MarkerFluid reduce_marker_sums(std::vector<double>& sums, MPI_Comm comm) {
   out.rho_lu.resize(n);
   out.u_lu.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
+    if (sums[4 * k] <= 0.0) {   // a marker inside a wall, no fluid node in reach: the wall, at rest
+      out.rho_lu[k] = 1.0;
+      continue;
+    }
     out.rho_lu[k] = sums[4 * k];
     out.u_lu[k] = common::Vec3{sums[4 * k + 1], sums[4 * k + 2], sums[4 * k + 3]} / sums[4 * k];
   }
   return out;
+}
+
+/// Per marker: 1 if its fluid nodes carry the whole weight (the kernels sum to one to ~1e-16; 1e-12 tells a wall
+/// or a face beyond the box apart from round-off), else 1 / that weight, or 0 without any fluid node.
+std::vector<double> cut_stencil_scale_from(std::vector<double>& fluid_weight, MPI_Comm comm) {
+  MPI_Allreduce(MPI_IN_PLACE, fluid_weight.data(), static_cast<int>(fluid_weight.size()), MPI_DOUBLE, MPI_SUM, comm);
+  std::vector<double> scale(fluid_weight.size(), 1.0);
+  for (std::size_t k = 0; k < fluid_weight.size(); ++k) {
+    if (fluid_weight[k] < 1.0 - 1e-12) scale[k] = fluid_weight[k] > 0.0 ? 1.0 / fluid_weight[k] : 0.0;
+  }
+  return scale;
 }
 
 }  // namespace
@@ -71,18 +86,28 @@ void ImmersedBoundary::for_each_local_node(const common::Vec3& x_lu,
   }
 }
 
+std::vector<double> ImmersedBoundary::cut_stencil_scale(std::span<const common::Vec3> x_lu) const {
+  const std::size_t n = x_lu.size();
+  std::vector<double> fluid_weight(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    for_each_local_node(x_lu[k], [&](int x, int y, int z, double w) {
+      if (lattice_.is_fluid(x, y, z)) fluid_weight[k] += w;
+    });
+  }
+  return cut_stencil_scale_from(fluid_weight, lattice_.decomposition().comm());
+}
+
 MarkerFluid ImmersedBoundary::interpolate(std::span<const common::Vec3> x_lu) const {
   const std::size_t n = x_lu.size();
+  const std::vector<double> scale = cut_stencil_scale(x_lu);
   std::vector<double> sums(4 * n, 0.0);   // rho, j_x, j_y, j_z per marker
   for (std::size_t k = 0; k < n; ++k) {
     for_each_local_node(x_lu[k], [&](int x, int y, int z, double w) {
-      if (!lattice_.is_fluid(x, y, z)) {
-        sums[4 * k] += w;   // wall node: rho0 = 1 at rest
-        return;
-      }
+      if (!lattice_.is_fluid(x, y, z)) return;
       const NodeMoments m = lattice_.moments(x, y, z);
-      sums[4 * k] += w * m.rho;
-      for (int a = 0; a < 3; ++a) sums[4 * k + 1 + static_cast<std::size_t>(a)] += w * m.rho * m.u[a];
+      const double ws = w * scale[k];
+      sums[4 * k] += ws * m.rho;
+      for (int a = 0; a < 3; ++a) sums[4 * k + 1 + static_cast<std::size_t>(a)] += ws * m.rho * m.u[a];
     });
   }
   return reduce_marker_sums(sums, lattice_.decomposition().comm());
@@ -90,9 +115,10 @@ MarkerFluid ImmersedBoundary::interpolate(std::span<const common::Vec3> x_lu) co
 
 void ImmersedBoundary::spread(std::span<const common::Vec3> x_lu, std::span<const common::Vec3> f_lu) {
   if (x_lu.size() != f_lu.size()) throw std::invalid_argument("spread: one force per marker");
+  const std::vector<double> scale = cut_stencil_scale(x_lu);
   for (std::size_t k = 0; k < x_lu.size(); ++k) {
     for_each_local_node(x_lu[k], [&](int x, int y, int z, double w) {
-      if (lattice_.is_fluid(x, y, z)) lattice_.add_force(x, y, z, w * f_lu[k]);
+      if (lattice_.is_fluid(x, y, z)) lattice_.add_force(x, y, z, (w * scale[k]) * f_lu[k]);
     });
   }
 }
@@ -109,8 +135,8 @@ double max_slip(const Markers& markers, const MarkerFluid& fluid) {
 
 namespace {
 
-/// One (marker, local node) pair of the stencils: the node's force-field index, the weight, and the node's rho and
-/// momentum without any IBM force (wall nodes: rho0 = 1 at rest, no force).
+/// One (marker, local node) pair of the stencils: the node's force-field index, the weight (0 for a wall node,
+/// renormalised over the fluid nodes of a cut stencil), and the node's rho and momentum without any IBM force.
 struct StencilEntry {
   std::size_t node;
   double weight;
@@ -130,7 +156,7 @@ std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const Flu
     ibm.for_each_local_node(x_lu[k], [&](int x, int y, int z, double w) {
       const auto node = static_cast<std::size_t>(layout.index(x, y, z));
       if (!lattice.is_fluid(x, y, z)) {
-        entries.push_back({node, w, 1.0, {}, false});
+        entries.push_back({node, w, 0.0, {}, false});
         return;
       }
       const NodeMoments m = lattice.moments(x, y, z);
@@ -138,6 +164,16 @@ std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const Flu
     });
   }
   first[n] = entries.size();
+  // Cut stencils (see the class comment): renormalise over the fluid nodes of every rank.
+  std::vector<double> fluid_weight(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t e = first[k]; e < first[k + 1]; ++e) fluid_weight[k] += entries[e].fluid ? entries[e].weight : 0.0;
+  }
+  const std::vector<double> scale = cut_stencil_scale_from(fluid_weight, lattice.decomposition().comm());
+  for (std::size_t k = 0; k < n; ++k) {
+    if (scale[k] == 1.0) continue;
+    for (std::size_t e = first[k]; e < first[k + 1]; ++e) entries[e].weight = entries[e].fluid ? entries[e].weight * scale[k] : 0.0;
+  }
   return entries;
 }
 

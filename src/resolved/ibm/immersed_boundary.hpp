@@ -41,8 +41,11 @@ struct ForcingReport {
 
 /// Immersed boundary operations on one FluidLattice. Every marker is known on every rank; each rank touches only
 /// its own interior nodes and the per-marker sums are combined with MPI_Allreduce, so results do not depend on
-/// the decomposition beyond round-off. Nodes outside the fluid (walls) count as rho0 = 1 at rest when
-/// interpolating and receive no force when spreading. Non-periodic axes: nodes beyond the box are skipped.
+/// the decomposition beyond round-off. Near a wall a stencil is cut: nodes outside the fluid (or beyond a
+/// non-periodic face) get no force and do not enter the average, and the fluid nodes' weights are renormalised to sum to one. So spreading conserves the
+/// total force there too (a cut stencil lost the wall nodes' share: momentum leaked into the walls, and the forcing
+/// iterations over-drove the fluid), and interpolation stays the transpose of spreading. Stencils without a wall node
+/// are untouched, bit for bit. Non-periodic axes: nodes beyond the box are skipped.
 class ImmersedBoundary {
  public:
   ImmersedBoundary(FluidLattice& lattice, const IbmSettings& settings);
@@ -63,6 +66,10 @@ class ImmersedBoundary {
   [[nodiscard]] const IbmSettings& settings() const { return settings_; }
 
  private:
+  /// Per marker: 1 if its stencil is whole, else 1 / (sum of its fluid nodes' weights), 0 if it has none.
+  /// Collective (a stencil may straddle ranks).
+  [[nodiscard]] std::vector<double> cut_stencil_scale(std::span<const common::Vec3> x_lu) const;
+
   FluidLattice& lattice_;
   IbmSettings settings_;
 };
