@@ -2,6 +2,10 @@
 // The in-place AA-pattern stream + TRT/BGK collision kernel with Guo forcing.
 #include "resolved/lbm/aa_stream_collide.hpp"
 
+#include <omp.h>
+
+#include <vector>
+
 #include "resolved/lbm/trt_guo_collision.hpp"
 
 namespace hs::resolved {
@@ -88,6 +92,27 @@ void aa_update_run(const AaStreamCollideArgs& a, const Slots& slot, const std::a
   aa_update_nodes<kStep, kForceField>(a, slot, begin, end);
 }
 
+struct LayerRange {
+  int begin;
+  int end;
+};
+
+/// This thread's contiguous range of layers: the layers whose first node falls in its equal share of the nodes
+/// (`nodes_before[z]`: nodes in the layers below z; the last entry is the total).
+LayerRange thread_layers(const std::vector<double>& nodes_before) {
+  const int threads = omp_get_num_threads();
+  const int t = omp_get_thread_num();
+  const double total = nodes_before.back();
+  const auto nz = static_cast<int>(nodes_before.size()) - 1;
+  const auto first_at_or_above = [&](double share) {
+    int z = 0;
+    while (z < nz && nodes_before[static_cast<std::size_t>(z)] < share) ++z;
+    return z;
+  };
+  if (t == threads - 1) return {first_at_or_above(total * t / threads), nz};
+  return {first_at_or_above(total * t / threads), first_at_or_above(total * (t + 1) / threads)};
+}
+
 template <AaStep kStep>
 void aa_update_runs(const AaStreamCollideArgs& a) {
   Slots slot{};
@@ -98,15 +123,44 @@ void aa_update_runs(const AaStreamCollideArgs& a) {
   const std::ptrdiff_t nx = kStep == AaStep::neighbour ? a.wrap_x : 0;
   const std::array<Slots, 3> edges{edge_slots(slot, nx, true, false), edge_slots(slot, nx, false, true),
                                    edge_slots(slot, nx, true, true)};
-  const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
   const bool has_field = a.force_field != nullptr;
-#pragma omp parallel for schedule(static) if (a.threaded)
-  for (std::ptrdiff_t r = 0; r < runs; ++r) {
-    const FluidRun run = a.runs[static_cast<std::size_t>(r)];
+  const auto update = [&](std::size_t r) {
     if (has_field) {
-      aa_update_run<kStep, true>(a, slot, edges, run);
+      aa_update_run<kStep, true>(a, slot, edges, a.runs[r]);
     } else {
-      aa_update_run<kStep, false>(a, slot, edges, run);
+      aa_update_run<kStep, false>(a, slot, edges, a.runs[r]);
+    }
+  };
+  if (a.layer_runs == nullptr || a.layer_runs->empty()) {
+    const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
+#pragma omp parallel for schedule(static) if (a.threaded)
+    for (std::ptrdiff_t r = 0; r < runs; ++r) update(static_cast<std::size_t>(r));
+    return;
+  }
+  const std::vector<std::size_t>& layers = *a.layer_runs;
+  const int nz = static_cast<int>(layers.size()) - 1;
+  std::vector<double> nodes_before(layers.size(), 0.0);   // fluid nodes in the layers below z
+  for (int z = 0; z < nz; ++z) {
+    double n = 0.0;
+    for (std::size_t r = layers[static_cast<std::size_t>(z)]; r < layers[static_cast<std::size_t>(z) + 1]; ++r) {
+      n += static_cast<double>(a.runs[r].length);
+    }
+    nodes_before[static_cast<std::size_t>(z) + 1] = nodes_before[static_cast<std::size_t>(z)] + n;
+  }
+#pragma omp parallel if (a.threaded)
+  {
+    const LayerRange mine = thread_layers(nodes_before);
+    for (int z = mine.begin; z < mine.end; ++z) {
+      if (a.before_layer != nullptr) (*a.before_layer)(z);
+      for (std::size_t r = layers[static_cast<std::size_t>(z)]; r < layers[static_cast<std::size_t>(z) + 1]; ++r) update(r);
+      // Layer z - 1 is complete once z - 2 (this thread's, or none) and z are: only the first layer of the range
+      // waits for another thread.
+      if (a.after_layer != nullptr && z - 1 > mine.begin) (*a.after_layer)(z - 1);
+    }
+#pragma omp barrier
+    if (a.after_layer != nullptr && mine.end > mine.begin) {
+      (*a.after_layer)(mine.begin);
+      if (mine.end - 1 > mine.begin) (*a.after_layer)(mine.end - 1);
     }
   }
 }
