@@ -69,6 +69,29 @@ double triad_bandwidth_GBs(std::size_t n, int threads) {
   return median(rates);
 }
 
+/// In-place update a = s a over the same arrays as the triad: one load and one store of the same line per element,
+/// the access pattern of the AA kernel (every slot it reads it writes back), 16 bytes per element. A diagnostic next
+/// to the roofline, which stays the triad's: it shows what the memory system gives to this read/write mix.
+double inplace_bandwidth_GBs(std::size_t n, int threads) {
+  omp_set_num_threads(threads);
+  resolved::AlignedDoubles a(n);
+  const auto len = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < len; ++i) a[static_cast<std::size_t>(i)] = 1.0;
+  std::vector<double> rates;
+  for (int r = 0; r < kRepetitions + 1; ++r) {
+    const double s = r % 2 == 0 ? 2.0 : 0.5;   // alternating, so the values stay 1 and 2
+    const auto t0 = Clock::now();
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < len; ++i) a[static_cast<std::size_t>(i)] *= s;
+    const double sec = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (r > 0) rates.push_back(16.0 * static_cast<double>(n) / sec * 1e-9);   // first pass is warm-up
+  }
+  const double expected = (kRepetitions + 1) % 2 == 0 ? 1.0 : 2.0;   // the passes alternate x2 and x0.5
+  if (a[n / 2] != expected) std::fprintf(stderr, "in-place check failed\n");
+  return median(rates);
+}
+
 struct Measured {
   double mlups;
   double fluid_nodes;
@@ -141,14 +164,16 @@ std::unique_ptr<resolved::FluidLattice> plasma_tube(double dx_um, const common::
 }
 
 /// One measurement row: prints it and returns its JSON.
-nlohmann::json report(const std::string& name, const char* scheme, int threads, double bw, const Measured& m) {
+nlohmann::json report(const std::string& name, const char* scheme, int threads, double bw, double inplace_bw,
+                      const Measured& m) {
   const double roofline = bw * 1e9 / kBytesPerNodeUpdate * 1e-6;   // bw: the triad's real traffic
   fmt::print("{:<22} {:<27} {:>7} {:>10.2f} {:>14.1f} {:>10.1f} {:>9.3f}\n", name, scheme, threads, bw, roofline,
              m.mlups, m.mlups / roofline);
   return {{"scheme", scheme},          {"bandwidth_GBs", bw},
           {"roofline_mlups", roofline}, {"mlups", m.mlups},
           {"roofline_fraction", m.mlups / roofline}, {"fluid_nodes", m.fluid_nodes},
-          {"triad_stream_convention_GBs", bw / kTriadTrafficRatio}};
+          {"triad_stream_convention_GBs", bw / kTriadTrafficRatio}, {"inplace_update_GBs", inplace_bw},
+          {"kernel_GBs", m.mlups * 1e6 * kBytesPerNodeUpdate * 1e-9}};
 }
 
 }  // namespace
@@ -168,10 +193,14 @@ int run_lbm_bench(const hs::common::TaskOptions& options) {
              "stores\n(* triad GB/s: its real traffic, 32 B per element with the write-allocate read; the roofline is "
              "that over {} B)\n",
              kBytesPerNodeUpdate, kBytesPerNodeUpdate);
-  fmt::print("{:<22} {:<27} {:>7} {:>10} {:>14} {:>10} {:>9}\n", "case", "scheme", "threads", "triad GB/s*",
-             "roofline MLUPS", "MLUPS", "fraction");
   const std::array<double, 2> bw{triad_bandwidth_GBs(triad_n, 1) * kTriadTrafficRatio,
                                  triad_bandwidth_GBs(triad_n, 2) * kTriadTrafficRatio};
+  const std::array<double, 2> inplace_bw{inplace_bandwidth_GBs(3 * triad_n, 1), inplace_bandwidth_GBs(3 * triad_n, 2)};
+  fmt::print("in-place update a = s a (the AA pattern's read/write mix, 16 B per element): {:.2f} GB/s on 1 thread, "
+             "{:.2f} GB/s on 2 (diagnostic only; the roofline is the triad's)\n",
+             inplace_bw[0], inplace_bw[1]);
+  fmt::print("{:<22} {:<27} {:>7} {:>10} {:>14} {:>10} {:>9}\n", "case", "scheme", "threads", "triad GB/s*",
+             "roofline MLUPS", "MLUPS", "fraction");
   for (const bool is_box : {true, false}) {
     const std::string& name = is_box ? box_name : tube_name;
     for (const Scheme& scheme : kSchemes) {   // each lattice is built once and timed on 1 and 2 threads
@@ -179,7 +208,8 @@ int run_lbm_bench(const hs::common::TaskOptions& options) {
       for (const int threads : {1, 2}) {
         const std::string key = std::to_string(threads) + "_threads";
         const nlohmann::json row =
-            report(name, scheme.name, threads, bw[static_cast<std::size_t>(threads - 1)], measure(*lattice, threads, steps));
+            report(name, scheme.name, threads, bw[static_cast<std::size_t>(threads - 1)],
+                   inplace_bw[static_cast<std::size_t>(threads - 1)], measure(*lattice, threads, steps));
         cases[name]["by_scheme"][scheme.name][key] = row;
         // The fastest scheme the solver runs for this case.
         if (!cases[name].contains(key) || row["mlups"].get<double>() > cases[name][key]["mlups"].get<double>()) {
@@ -198,6 +228,9 @@ int run_lbm_bench(const hs::common::TaskOptions& options) {
   out["schemes_note"] = "every scheme listed is a mode of the solver (FluidLattice, LatticeSpec::streaming and "
                         "store_mode) and runs both bench cases; the default is two_buffer (aa refuses open faces), "
                         "so case runners that do not select aa run two_buffer";
+  out["inplace_note"] = "inplace_update_GBs: a = s a over 3x the triad's array length (the same bytes), 16 B per "
+                        "element, the AA kernel's read/write mix; kernel_GBs = mlups x bytes_per_node_update. Diagnostics: "
+                        "the roofline stays the triad's";
   out["repetitions"] = kRepetitions;
   out["cases"] = cases;
   out["provenance"] = common::provenance();

@@ -2,6 +2,10 @@
 // The in-place AA-pattern stream + TRT/BGK collision kernel with Guo forcing.
 #include "resolved/lbm/aa_stream_collide.hpp"
 
+#include <omp.h>
+
+#include <vector>
+
 #include "resolved/lbm/trt_guo_collision.hpp"
 
 namespace hs::resolved {
@@ -9,19 +13,32 @@ namespace {
 
 using C = D3Q19;
 
-/// Updates nodes [begin, end): f_i = in[i][n], collide, out[i][n] = f*_i. `in` and `out` point into the same
-/// buffer; the SIMD pragma is valid because node n's slots are disjoint from every other node's (see the header),
-/// and each store depends on all 19 loads of its own node.
-template <bool kForceField>
-void aa_update_nodes(const AaStreamCollideArgs& a, const std::array<const double*, C::q>& in,
-                     const std::array<double*, C::q>& out, std::ptrdiff_t begin, std::ptrdiff_t end) {
+/// The 19 slot arrays one node reads and writes: node n reads its f_i from and writes its f*_i to slot[j][n] for a
+/// direction j fixed by the step (see slot_of). The reads and writes of a node go through the same 19 pointers
+/// (neighbour step: f_i from A[opp(i)][n - c_i] = slot[opp(i)][n], f*_i to A[i][n + c_i] = slot[i][n]; local step:
+/// f_i from A[i][n] = slot[i][n], f*_i to A[opp(i)][n] = slot[opp(i)][n]), which halves the live pointers of the
+/// loop against separate read and write tables (38 do not fit in the 16 general registers).
+using Slots = std::array<double*, C::q>;
+
+/// The slot array holding f_i (kRead) or receiving f*_i (!kRead) in step kStep.
+template <AaStep kStep, bool kRead>
+constexpr std::size_t slot_of(int i) {
+  const bool own = (kStep == AaStep::neighbour) != kRead;
+  return static_cast<std::size_t>(own ? i : C::opposite(i));
+}
+
+/// Updates nodes [begin, end): f_i = slot[slot_of<kStep, true>(i)][n], collide, store f*_i to
+/// slot[slot_of<kStep, false>(i)][n]. The SIMD pragma is valid because node n's slots are disjoint from every other
+/// node's (see the header), and each store depends on all 19 loads of its own node.
+template <AaStep kStep, bool kForceField>
+void aa_update_nodes(const AaStreamCollideArgs& a, const Slots& slot, std::ptrdiff_t begin, std::ptrdiff_t end) {
   const TrtRates rates = trt_rates(a.omega_plus, a.omega_minus);
   const std::ptrdiff_t vol = static_cast<std::ptrdiff_t>(a.force_stride);
 #pragma omp simd
   for (std::ptrdiff_t n = begin; n < end; ++n) {
     double f[C::q];
 #pragma GCC unroll 19
-    for (int i = 0; i < C::q; ++i) f[i] = in[static_cast<std::size_t>(i)][n];
+    for (int i = 0; i < C::q; ++i) f[i] = slot[slot_of<kStep, true>(i)][n];
     double fx = a.body_force.x;
     double fy = a.body_force.y;
     double fz = a.body_force.z;
@@ -33,87 +50,128 @@ void aa_update_nodes(const AaStreamCollideArgs& a, const std::array<const double
     double post[C::q];
     trt_guo_collide(f, fx, fy, fz, rates, post);
 #pragma GCC unroll 19
-    for (int i = 0; i < C::q; ++i) out[static_cast<std::size_t>(i)][n] = post[i];
+    for (int i = 0; i < C::q; ++i) slot[slot_of<kStep, false>(i)][n] = post[i];
   }
 }
 
-/// Pointer tables of the neighbour step for a node at the low (x = 0) and/or high (x = nx - 1) end of a periodic
-/// row: the directions that cross the face read and write the image at the other end instead of the ghost.
-struct EdgeTables {
-  std::array<const double*, C::q> in;
-  std::array<double*, C::q> out;
-};
-
-EdgeTables edge_tables(const std::array<const double*, C::q>& in, const std::array<double*, C::q>& out,
-                       std::ptrdiff_t nx, bool low, bool high) {
-  EdgeTables t{in, out};
-  for (std::size_t i = 0; i < C::q; ++i) {
-    const int cx = C::c[i][0];
-    // Reads come from x - c_i, writes go to x + c_i.
-    if (low && cx == 1) t.in[i] += nx;
-    if (low && cx == -1) t.out[i] += nx;
-    if (high && cx == -1) t.in[i] -= nx;
-    if (high && cx == 1) t.out[i] -= nx;
+/// Slot tables of the neighbour step for a node at the low (x = 0) and/or high (x = nx - 1) end of a periodic row:
+/// the directions that cross the face read and write the image at the other end instead of the ghost. slot[j][n]
+/// is A[j][n + c_j]: it lies beyond the low face for c_jx = -1 and beyond the high face for c_jx = +1.
+Slots edge_slots(const Slots& slot, std::ptrdiff_t nx, bool low, bool high) {
+  Slots t = slot;
+  for (std::size_t j = 0; j < C::q; ++j) {
+    const int cx = C::c[j][0];
+    if (low && cx == -1) t[j] += nx;
+    if (high && cx == 1) t[j] -= nx;
   }
   return t;
 }
 
-template <bool kForceField>
-void aa_update_run(const AaStreamCollideArgs& a, const std::array<const double*, C::q>& in,
-                   const std::array<double*, C::q>& out, const std::array<EdgeTables, 3>& edges, FluidRun run) {
+template <AaStep kStep, bool kForceField>
+void aa_update_run(const AaStreamCollideArgs& a, const Slots& slot, const std::array<Slots, 3>& edges, FluidRun run) {
   std::ptrdiff_t begin = run.begin;
   std::ptrdiff_t end = run.begin + run.length;
-  if (a.wrap_x > 0) {
+  if (kStep == AaStep::neighbour && a.wrap_x > 0) {
     const std::ptrdiff_t ghost = (a.stride_y - a.wrap_x) / 2;
     const std::ptrdiff_t x0 = begin % a.stride_y - ghost;
     const bool low = x0 == 0;
     const bool high = x0 + run.length == a.wrap_x;
     if (low && high && run.length == 1) {
-      aa_update_nodes<kForceField>(a, edges[2].in, edges[2].out, begin, begin + 1);
+      aa_update_nodes<kStep, kForceField>(a, edges[2], begin, begin + 1);
       return;
     }
     if (low) {
-      aa_update_nodes<kForceField>(a, edges[0].in, edges[0].out, begin, begin + 1);
+      aa_update_nodes<kStep, kForceField>(a, edges[0], begin, begin + 1);
       ++begin;
     }
     if (high) {
-      aa_update_nodes<kForceField>(a, edges[1].in, edges[1].out, end - 1, end);
+      aa_update_nodes<kStep, kForceField>(a, edges[1], end - 1, end);
       --end;
     }
   }
-  aa_update_nodes<kForceField>(a, in, out, begin, end);
+  aa_update_nodes<kStep, kForceField>(a, slot, begin, end);
+}
+
+struct LayerRange {
+  int begin;
+  int end;
+};
+
+/// This thread's contiguous range of layers: the layers whose first node falls in its equal share of the nodes
+/// (`nodes_before[z]`: nodes in the layers below z; the last entry is the total).
+LayerRange thread_layers(const std::vector<double>& nodes_before) {
+  const int threads = omp_get_num_threads();
+  const int t = omp_get_thread_num();
+  const double total = nodes_before.back();
+  const auto nz = static_cast<int>(nodes_before.size()) - 1;
+  const auto first_at_or_above = [&](double share) {
+    int z = 0;
+    while (z < nz && nodes_before[static_cast<std::size_t>(z)] < share) ++z;
+    return z;
+  };
+  if (t == threads - 1) return {first_at_or_above(total * t / threads), nz};
+  return {first_at_or_above(total * t / threads), first_at_or_above(total * (t + 1) / threads)};
+}
+
+template <AaStep kStep>
+void aa_update_runs(const AaStreamCollideArgs& a) {
+  Slots slot{};
+  for (std::size_t j = 0; j < C::q; ++j) {
+    slot[j] = a.f + j * a.volume + (kStep == AaStep::neighbour ? a.offset[j] : 0);
+  }
+  // The local step touches only the node itself: no wrapping.
+  const std::ptrdiff_t nx = kStep == AaStep::neighbour ? a.wrap_x : 0;
+  const std::array<Slots, 3> edges{edge_slots(slot, nx, true, false), edge_slots(slot, nx, false, true),
+                                   edge_slots(slot, nx, true, true)};
+  const bool has_field = a.force_field != nullptr;
+  const auto update = [&](std::size_t r) {
+    if (has_field) {
+      aa_update_run<kStep, true>(a, slot, edges, a.runs[r]);
+    } else {
+      aa_update_run<kStep, false>(a, slot, edges, a.runs[r]);
+    }
+  };
+  if (a.layer_runs == nullptr || a.layer_runs->empty()) {
+    const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
+#pragma omp parallel for schedule(static) if (a.threaded)
+    for (std::ptrdiff_t r = 0; r < runs; ++r) update(static_cast<std::size_t>(r));
+    return;
+  }
+  const std::vector<std::size_t>& layers = *a.layer_runs;
+  const int nz = static_cast<int>(layers.size()) - 1;
+  std::vector<double> nodes_before(layers.size(), 0.0);   // fluid nodes in the layers below z
+  for (int z = 0; z < nz; ++z) {
+    double n = 0.0;
+    for (std::size_t r = layers[static_cast<std::size_t>(z)]; r < layers[static_cast<std::size_t>(z) + 1]; ++r) {
+      n += static_cast<double>(a.runs[r].length);
+    }
+    nodes_before[static_cast<std::size_t>(z) + 1] = nodes_before[static_cast<std::size_t>(z)] + n;
+  }
+#pragma omp parallel if (a.threaded)
+  {
+    const LayerRange mine = thread_layers(nodes_before);
+    for (int z = mine.begin; z < mine.end; ++z) {
+      if (a.before_layer != nullptr) (*a.before_layer)(z);
+      for (std::size_t r = layers[static_cast<std::size_t>(z)]; r < layers[static_cast<std::size_t>(z) + 1]; ++r) update(r);
+      // Layer z - 1 is complete once z - 2 (this thread's, or none) and z are: only the first layer of the range
+      // waits for another thread.
+      if (a.after_layer != nullptr && z - 1 > mine.begin) (*a.after_layer)(z - 1);
+    }
+#pragma omp barrier
+    if (a.after_layer != nullptr && mine.end > mine.begin) {
+      (*a.after_layer)(mine.begin);
+      if (mine.end - 1 > mine.begin) (*a.after_layer)(mine.end - 1);
+    }
+  }
 }
 
 }  // namespace
 
 void aa_stream_collide(const AaStreamCollideArgs& a, AaStep step) {
-  std::array<const double*, C::q> in{};
-  std::array<double*, C::q> out{};
-  for (std::size_t i = 0; i < C::q; ++i) {
-    const auto o = static_cast<std::size_t>(C::opposite(static_cast<int>(i)));
-    if (step == AaStep::local) {
-      in[i] = a.f + i * a.volume;
-      out[i] = a.f + o * a.volume;
-    } else {
-      in[i] = a.f + o * a.volume - a.offset[i];
-      out[i] = a.f + i * a.volume + a.offset[i];
-    }
-  }
-  AaStreamCollideArgs args = a;
-  if (step == AaStep::local) args.wrap_x = 0;   // the local step touches only the node itself
-  const std::array<EdgeTables, 3> edges{edge_tables(in, out, args.wrap_x, true, false),
-                                        edge_tables(in, out, args.wrap_x, false, true),
-                                        edge_tables(in, out, args.wrap_x, true, true)};
-  const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
-  const bool has_field = a.force_field != nullptr;
-#pragma omp parallel for schedule(static) if (a.threaded)
-  for (std::ptrdiff_t r = 0; r < runs; ++r) {
-    const FluidRun run = a.runs[static_cast<std::size_t>(r)];
-    if (has_field) {
-      aa_update_run<true>(args, in, out, edges, run);
-    } else {
-      aa_update_run<false>(args, in, out, edges, run);
-    }
+  if (step == AaStep::local) {
+    aa_update_runs<AaStep::local>(a);
+  } else {
+    aa_update_runs<AaStep::neighbour>(a);
   }
 }
 

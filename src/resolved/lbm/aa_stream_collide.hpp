@@ -4,7 +4,9 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <span>
+#include <vector>
 
 #include "common/vec3.hpp"
 #include "resolved/lbm/d3q19.hpp"
@@ -39,6 +41,12 @@ struct AaStreamCollideArgs {
   /// writes into the interior instead of using the x ghosts (no x fill or fold needed). 0: no wrapping.
   std::ptrdiff_t wrap_x = 0;
   std::ptrdiff_t stride_y = 0;                   // linear offset of one node along y (with wrap_x > 0)
+  /// Optional layering along z: the runs of local layer z are runs[layer_runs[z] .. layer_runs[z + 1]) (size n_z + 1;
+  /// empty: no layering). The threads then take contiguous ranges of layers (balanced by nodes) and call the hooks,
+  /// concurrently for different layers, so sparse passes can work on layers while they are still in cache:
+  const std::vector<std::size_t>* layer_runs = nullptr;
+  const std::function<void(int)>* before_layer = nullptr;   // right before the nodes of layer z are updated
+  const std::function<void(int)>* after_layer = nullptr;    // once layers z - 1, z, z + 1 are updated; each z once
 };
 
 /// One AA step on every node of `runs`, with the same collision (trt_guo_collide) as stream_collide().

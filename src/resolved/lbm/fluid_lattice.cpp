@@ -3,6 +3,7 @@
 #include "resolved/lbm/fluid_lattice.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <utility>
 
@@ -93,6 +94,7 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
   steps_ = 0;
   links_need_odd_parts_ = std::any_of(links_.begin(), links_.end(), [](const WallLink& l) { return l.e != 0.0; });
   if (aa()) {
+    build_aa_layers();
     dst_ = AlignedDoubles();
     aa_halo_ = std::make_unique<AaHalo>(*decomposition_, stride_, aa_wrap_x() > 0);
     link_odd_parts_.assign(links_.size(), 0.0);
@@ -124,7 +126,11 @@ void FluidLattice::exchange_halos() {
 
 void FluidLattice::apply_boundaries() {
   if (aa()) {
-    apply_wall_links_aa(links_, src_.data(), aa_layout(), link_odd_parts_);
+    // After a step the kernel has applied the fused links already; at initialize() all links are due.
+    const std::size_t first = fused_links_done_ ? fused_links_ : 0;
+    fused_links_done_ = false;
+    apply_wall_links_aa(std::span<const WallLink>(links_).subspan(first), src_.data(), aa_layout(),
+                        std::span<const double>(link_odd_parts_).subspan(first));
     return;
   }
   apply_open_boundaries(open_nodes_, src_.data(), stride_);
@@ -170,9 +176,32 @@ std::ptrdiff_t FluidLattice::aa_wrap_x() const {
   return self_periodic ? layout_.n[0] : 0;
 }
 
-/// Even steps_ (swapped layout) take a neighbour step, odd ones a local step.
+/// Even steps_ (swapped layout) take a neighbour step, odd ones a local step. The links away from the block faces
+/// are captured right before their layer is updated (their slots belong to their own node, which only that update
+/// overwrites) and applied once the layers around them are (their values depend on no ghost pass), while the
+/// layers are in cache; the others are captured first and applied after the ghost pass, in apply_boundaries().
 void FluidLattice::aa_stream_collide() {
-  if (links_need_odd_parts_) capture_link_odd_parts(links_, src_.data(), aa_layout(), link_odd_parts_);
+  const AaLayout before = aa_layout();
+  AaLayout after = before;
+  after.natural = !before.natural;
+  const std::span<const WallLink> links(links_);
+  const std::span<double> odd(link_odd_parts_);
+  if (links_need_odd_parts_) {
+    capture_link_odd_parts(links.subspan(fused_links_), src_.data(), before, odd.subspan(fused_links_));
+  }
+  const auto layer = [&](int z) {
+    const std::size_t k0 = layer_links_[static_cast<std::size_t>(z)];
+    return std::pair{k0, layer_links_[static_cast<std::size_t>(z) + 1] - k0};
+  };
+  const std::function<void(int)> capture = [&](int z) {
+    const auto [k0, count] = layer(z);
+    capture_link_odd_parts(links.subspan(k0, count), src_.data(), before, odd.subspan(k0, count));
+  };
+  const std::function<void(int)> apply = [&](int z) {
+    const auto [k0, count] = layer(z);
+    apply_wall_links_aa(links.subspan(k0, count), src_.data(), after, odd.subspan(k0, count));
+  };
+  const bool fused = fused_links_ > 0;
   resolved::aa_stream_collide(
       AaStreamCollideArgs{.f = src_.data(),
                           .volume = stride_,
@@ -185,8 +214,12 @@ void FluidLattice::aa_stream_collide() {
                           .omega_minus = spec_.collision.omega_minus(),
                           .threaded = fluid_nodes_ >= kMinNodesForThreads,
                           .wrap_x = aa_wrap_x(),
-                          .stride_y = layout_.stride_y()},
+                          .stride_y = layout_.stride_y(),
+                          .layer_runs = fused ? &layer_runs_ : nullptr,
+                          .before_layer = fused && links_need_odd_parts_ ? &capture : nullptr,
+                          .after_layer = fused ? &apply : nullptr},
       steps_ % 2 == 0 ? AaStep::neighbour : AaStep::local);
+  fused_links_done_ = true;
   ++steps_;
 }
 

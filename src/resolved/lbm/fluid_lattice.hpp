@@ -167,6 +167,7 @@ class FluidLattice {
   void build_runs();
   void build_wall_links();
   void build_open_nodes();
+  void build_aa_layers();
   void complete_state();
   [[nodiscard]] std::array<int, 3> global_of(std::ptrdiff_t index) const;
   [[nodiscard]] std::ptrdiff_t index(int x, int y, int z) const { return layout_.index(x, y, z); }
@@ -190,6 +191,13 @@ class FluidLattice {
   std::size_t fluid_nodes_ = 0;
   std::vector<WallLink> links_;
   std::vector<double> link_odd_parts_;   // AA: pre-collision odd parts of the links' nodes (capture_link_odd_parts)
+  /// AA: links_[0, fused_links_) are those at least two nodes from every block face, z-major; the kernel captures and
+  /// applies them layer by layer while the layer is in cache (layer z: links_[layer_links_[z], layer_links_[z + 1])).
+  /// The others need the ghost passes and follow them in apply_boundaries().
+  std::size_t fused_links_ = 0;
+  std::vector<std::size_t> layer_links_;
+  std::vector<std::size_t> layer_runs_;   // AA: runs_[layer_runs_[z], layer_runs_[z + 1]) lie in local layer z
+  bool fused_links_done_ = false;         // the last aa_stream_collide() applied the fused links
   bool links_need_odd_parts_ = false;    // some link has e != 0 (Bouzidi)
   std::unique_ptr<AaHalo> aa_halo_;      // AA: ghost fill before neighbour steps, fold after them
   std::vector<OpenNode> open_nodes_;

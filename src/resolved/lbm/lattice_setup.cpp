@@ -2,6 +2,8 @@
 // Set-up of the fluid lattice: node classification, fluid runs, wall links and open-boundary nodes.
 #include "resolved/lbm/fluid_lattice.hpp"
 
+#include <algorithm>
+
 namespace hs::resolved {
 
 common::Vec3 FluidLattice::shape_point(const std::array<int, 3>& g) const {
@@ -102,6 +104,30 @@ void FluidLattice::build_wall_links() {
         }
       }
     }
+  }
+}
+
+/// AA: orders the links so that those at least two nodes from every block face come first (z-major, as built), and
+/// indexes them and the runs by local z layer. Such a link reads and writes slots of nodes within one node of its
+/// own, which no ghost pass touches (fill and fold work on the ghosts and the first and last interior layers).
+void FluidLattice::build_aa_layers() {
+  const auto inner = [&](const WallLink& l) {
+    const auto c = layout_.coords(l.node);
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (c[a] < 2 || c[a] > layout_.n[a] - 3) return false;
+    }
+    return true;
+  };
+  const auto split = std::stable_partition(links_.begin(), links_.end(), inner);
+  fused_links_ = static_cast<std::size_t>(split - links_.begin());
+  const auto nz = static_cast<std::size_t>(layout_.n[2]);
+  layer_links_.assign(nz + 1, 0);
+  layer_runs_.assign(nz + 1, 0);
+  for (std::size_t k = 0; k < fused_links_; ++k) ++layer_links_[static_cast<std::size_t>(layout_.coords(links_[k].node)[2]) + 1];
+  for (const FluidRun& r : runs_) ++layer_runs_[static_cast<std::size_t>(layout_.coords(r.begin)[2]) + 1];
+  for (std::size_t z = 0; z < nz; ++z) {
+    layer_links_[z + 1] += layer_links_[z];
+    layer_runs_[z + 1] += layer_runs_[z];
   }
 }
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Verification: the in-place AA pattern gives the same populations as the two-buffer pull scheme after even and odd
-// step counts (periodic box with forces, half-way walls with a moving wall, Bouzidi tube), and plane Poiseuille.
+// step counts (periodic box with forces, half-way walls with a moving wall, Bouzidi tubes on one and two threads), and
+// plane Poiseuille.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -109,6 +111,29 @@ TEST_P(AaSteps, BouzidiTubeMatchesTwoBuffer) {
     return l;
   };
   EXPECT_LT(max_relative_difference(make, GetParam()), kTolerance);
+}
+
+TEST_P(AaSteps, BouzidiTubeOnTwoThreadsMatchesTwoBuffer) {
+  // Radius 22 along a periodic z, 36k fluid nodes: enough for the kernels to share the work among threads (two here),
+  // which for AA means contiguous ranges of z layers whose wall links are applied inside the kernel, the first and
+  // last layer of each range after the other thread's layers are done.
+  const double c = 23.5;
+  const common::Tube tube(common::TubeSpec{.start_m = {c, c, -1.0}, .end_m = {c, c, 25.0}, .radius_m = 22.0});
+  const Maker make = [&](Streaming streaming) {
+    const CollisionParams collision{.model = CollisionModel::trt, .tau = 0.9, .magic = trt_magic_default};
+    auto l = std::make_unique<FluidLattice>(
+        LatticeSpec{.global_nodes = {48, 48, 24}, .periodic = {false, false, true}, .collision = collision,
+                    .ranks_per_axis = {}, .rho0_lu = 1.0, .streaming = streaming},
+        MPI_COMM_SELF);
+    l->set_shape(tube, ShapePlacement{.origin = {}, .spacing = 1.0}, WallRule::bouzidi);
+    l->set_body_force({1e-6, 2e-6, 1e-5});
+    l->initialize(swirl);
+    return l;
+  };
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  EXPECT_LT(max_relative_difference(make, GetParam()), kTolerance);
+  omp_set_num_threads(threads);
 }
 
 // Even and odd step counts end in the two layouts of the AA buffer.
