@@ -66,6 +66,7 @@ void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const Membran
                                          CouplingSettings{.ibm = n.ibm, .membrane_every = n.membrane_every,
                                                           .median_filter = true, .traction_area = n.traction_area,
                                                           .lattice_origin_m = s.origin_m,
+                                                          .drive_on_enclosed_volume = n.drive_on_enclosed_volume,
                                                           .add_forces_N = std::move(add_forces_N)});
 }
 

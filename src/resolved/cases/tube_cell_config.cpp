@@ -30,6 +30,7 @@ void apply_numerics(const CellNumerics& n, TubeCellConfig& c) {
   c.membrane_mass_factor = n.membrane_mass_factor;
   c.ibm = n.ibm;
   c.traction_area = n.traction_area;
+  c.drive_on_enclosed_volume = n.drive_on_enclosed_volume;
   c.streaming = n.streaming;
   c.dt_s = n.dt_s;
 }

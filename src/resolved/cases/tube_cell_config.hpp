@@ -36,6 +36,7 @@ struct TubeCellConfig {
   double membrane_mass_factor;      // numerical mass scaling of the membrane (see tube_cell_config.cpp)
   IbmSettings ibm;
   TractionArea traction_area;       // which area the sampled fluid stress acts on
+  bool drive_on_enclosed_volume = false;   // CellNumerics: the body-force share the sampled tractions miss
   // [run]
   double max_time_s;                // cap on simulated time
   double max_jeffery_periods;       // or the cap in Jeffery periods at r* (0: not given)

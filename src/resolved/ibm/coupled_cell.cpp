@@ -50,9 +50,13 @@ void CoupledCell::membrane_solve() {
                                         ring_, settings_.traction_area);
   std::vector<common::Vec3> f_N(t.force_lu.size());
   report_.fluid_force_N = {};
+  const bool add_drive = settings_.drive_on_enclosed_volume && !t.enclosed_volume_lu.empty();
   for (std::size_t k = 0; k < f_N.size(); ++k) {
     for (int a = 0; a < 3; ++a) f_N[k][a] = units_.to_si_force(t.force_lu[k][a]);
-    report_.fluid_force_N += f_N[k];
+    report_.fluid_force_N += f_N[k];   // the traction alone
+    if (!add_drive) continue;
+    const common::Vec3 drive_lu = t.enclosed_volume_lu[k] * lattice_.body_force();
+    for (int a = 0; a < 3; ++a) f_N[k][a] += units_.to_si_force(drive_lu[a]);
   }
   report_.vertices_without_fluid = t.vertices_without_fluid;
   report_.sample_distance_lu = t.mean_sample_distance_lu;

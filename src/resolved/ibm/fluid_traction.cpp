@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -87,37 +88,63 @@ common::Vec3 stress_times(const double* s, const common::Vec3& a) {
           s[4] * a.x + s[5] * a.y + s[2] * a.z};
 }
 
-/// The area vector each vertex's stress acts on.
-std::vector<common::Vec3> acting_areas(const SurfaceSample& surface, const std::vector<double>& distance,
-                                       TractionArea rule) {
-  std::vector<common::Vec3> area(surface.x_lu.size());
-  if (rule != TractionArea::membrane) {
-    if (surface.triangles.empty()) throw std::invalid_argument("fluid_traction: the sampled surface needs triangles");
-    // Each vertex's area vector on the parallel surface at its own distance d_v. A vertex area vector is exactly
-    // quadratic in a uniform offset, so three offsets (0, 1, 2 lu) give it at any d. A neighbour's jump to another
-    // sample node then leaves this vertex's area unchanged (a mesh through the actual sample points does not).
-    std::array<std::vector<common::Vec3>, 3> at;
+/// Area vectors of the surfaces parallel to the membrane: each vertex's area vector is exactly quadratic in a uniform
+/// offset, so three offsets (0, 1, 2 lu) give it at any distance d. A neighbour's jump to another sample node then
+/// leaves this vertex's area unchanged (a mesh through the actual sample points does not).
+class ParallelSurfaces {
+ public:
+  explicit ParallelSurfaces(const SurfaceSample& surface) {
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::vector<double> uniform(area.size(), static_cast<double>(k));
-      at[k] = offset_area_vectors(surface.x_lu, surface.normal, uniform, surface.triangles);
+      const std::vector<double> uniform(surface.x_lu.size(), static_cast<double>(k));
+      at_[k] = offset_area_vectors(surface.x_lu, surface.normal, uniform, surface.triangles);
     }
-    for (std::size_t v = 0; v < area.size(); ++v) {
-      const double d = distance[v];
-      area[v] = 0.5 * (d - 1.0) * (d - 2.0) * at[0][v] - d * (d - 2.0) * at[1][v] + 0.5 * d * (d - 1.0) * at[2][v];
-    }
-    if (rule == TractionArea::sampled_surface) return area;
-    double sampled = 0.0;
-    double own = 0.0;
-    for (std::size_t v = 0; v < area.size(); ++v) {
-      sampled += common::norm(area[v]);
-      own += surface.area_lu[v];
-    }
-    const double factor = own > 0.0 ? sampled / own : 1.0;
-    for (std::size_t v = 0; v < area.size(); ++v) area[v] = factor * surface.area_lu[v] * surface.normal[v];
+  }
+  [[nodiscard]] common::Vec3 area(std::size_t v, double d) const {
+    return 0.5 * (d - 1.0) * (d - 2.0) * at_[0][v] - d * (d - 2.0) * at_[1][v] + 0.5 * d * (d - 1.0) * at_[2][v];
+  }
+
+ private:
+  std::array<std::vector<common::Vec3>, 3> at_;
+};
+
+/// The area vector each vertex's stress acts on.
+std::vector<common::Vec3> acting_areas(const SurfaceSample& surface, const std::optional<ParallelSurfaces>& parallel,
+                                       const std::vector<double>& distance, TractionArea rule) {
+  std::vector<common::Vec3> area(surface.x_lu.size());
+  if (rule == TractionArea::membrane) {
+    for (std::size_t v = 0; v < area.size(); ++v) area[v] = surface.area_lu[v] * surface.normal[v];
     return area;
   }
-  for (std::size_t v = 0; v < area.size(); ++v) area[v] = surface.area_lu[v] * surface.normal[v];
+  if (!parallel) throw std::invalid_argument("fluid_traction: the sampled surface needs triangles");
+  for (std::size_t v = 0; v < area.size(); ++v) area[v] = parallel->area(v, distance[v]);
+  if (rule == TractionArea::sampled_surface) return area;
+  double sampled = 0.0;
+  double own = 0.0;
+  for (std::size_t v = 0; v < area.size(); ++v) {
+    sampled += common::norm(area[v]);
+    own += surface.area_lu[v];
+  }
+  const double factor = own > 0.0 ? sampled / own : 1.0;
+  for (std::size_t v = 0; v < area.size(); ++v) area[v] = factor * surface.area_lu[v] * surface.normal[v];
   return area;
+}
+
+/// Per vertex: the cone from the centroid to its membrane area (these sum to the mesh volume exactly) plus the shell
+/// out to its sample distance (Simpson's rule, exact for the quadratic parallel areas).
+std::vector<double> enclosed_volumes(const SurfaceSample& surface, const ParallelSurfaces& parallel,
+                                     const std::vector<double>& distance) {
+  const std::size_t nv = surface.x_lu.size();
+  common::Vec3 c;
+  for (const auto& x : surface.x_lu) c += x / static_cast<double>(nv);
+  std::vector<double> volume(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const double d = distance[v];
+    const double cone = common::dot(surface.x_lu[v] - c, parallel.area(v, 0.0)) / 3.0;
+    const double shell = d / 6.0 * (common::norm(parallel.area(v, 0.0)) + 4.0 * common::norm(parallel.area(v, 0.5 * d)) +
+                                    common::norm(parallel.area(v, d)));
+    volume[v] = cone + shell;
+  }
+  return volume;
 }
 
 }  // namespace
@@ -140,7 +167,9 @@ TractionResult fluid_traction(const ImmersedBoundary& ibm, const FluidLattice& l
   }
   MPI_Allreduce(MPI_IN_PLACE, slots.data(), static_cast<int>(slots.size()), MPI_DOUBLE, MPI_SUM,
                 lattice.decomposition().comm());
-  const std::vector<common::Vec3> area = acting_areas(surface, distance, area_rule);
+  std::optional<ParallelSurfaces> parallel;   // needs the triangles; only the `membrane` rule goes without
+  if (!surface.triangles.empty()) parallel.emplace(surface);
+  const std::vector<common::Vec3> area = acting_areas(surface, parallel, distance, area_rule);
   TractionResult result;
   double pa = 0.0;
   double a_sum = 0.0;
@@ -161,6 +190,8 @@ TractionResult fluid_traction(const ImmersedBoundary& ibm, const FluidLattice& l
     result.force_lu[v] = stress_times(&slots[kSlots * v], area[v]) - dp * area[v];
   }
   if (!ring.empty()) result.force_lu = median_filter(result.force_lu, ring);
+  if (parallel) result.enclosed_volume_lu = enclosed_volumes(surface, *parallel, distance);
+  result.sample_distance_lu = distance;
   return result;
 }
 

@@ -39,6 +39,10 @@ struct TractionResult {
   double mean_pressure_lu = 0.0;   // area-weighted mean of c_s^2 rho over the sampled vertices (removed)
   int vertices_without_fluid = 0;  // vertices whose outermost stencil node is a wall node (force set to zero)
   double mean_sample_distance_lu = 0.0;   // mean distance of the sample nodes outside the membrane along the normal
+  std::vector<double> sample_distance_lu;  // per vertex: its sample node's distance outside the membrane along the normal
+  /// Per vertex: its share of the volume the sampling surface encloses (cell + the shell out to its sample node),
+  /// lu^3. A body-force drive acts on that fluid, and the sampled tractions do not see it (CouplingSettings).
+  std::vector<double> enclosed_volume_lu;
 };
 
 /// Area vectors (1/3 of each adjacent triangle's vector area) of the mesh whose vertex v sits at

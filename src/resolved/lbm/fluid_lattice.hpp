@@ -88,6 +88,7 @@ class FluidLattice {
   void set_pressure_outlet(int axis, int side, double rho_lu);
   /// Uniform body-force density (lattice units, rho dx/dt^2), e.g. the drive of a periodic channel.
   void set_body_force(const common::Vec3& force_lu) { body_force_ = force_lu; }
+  [[nodiscard]] const common::Vec3& body_force() const { return body_force_; }
   /// Allocates a per-node force density field (zero), added to the body force (IBM spreading target).
   void enable_force_field();
   /// Classifies nodes, builds boundary links and sets f = f^eq(rho, u) from `init(global position lu)`.

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Membrane traction from the fluid stress: exact viscous traction in Couette flow (small and large tau), mean
-// pressure removal, and the 1-ring median filter.
+// pressure removal, the volume the sampling surface encloses, and the 1-ring median filter.
 #include <gtest/gtest.h>
 #include <mpi.h>
+
+#include <cmath>
 
 #include "../lbm/lbm_test_helpers.hpp"
 #include "resolved/ibm/fluid_traction.hpp"
@@ -64,6 +66,46 @@ TEST(OffsetAreaVectors, ScaleASphereByTheSquareOfItsRadiusAndCloseToZero) {
   }
   EXPECT_NEAR(total1 / total0, (1.0 + d) * (1.0 + d), 1e-12);
   EXPECT_LT(common::norm(sum), 1e-13 * total1);
+}
+
+TEST(EnclosedVolume, IsTheCellPlusTheShellOutToEachSampleNode) {
+  // A sphere of radius R = 4 lu (642 vertices, radial normals) in fluid at rest. Offsetting along the radii scales
+  // the mesh, so vertex v's parallel area at distance s is exactly |A_v| (1 + s / R)^2 and its shell out to its
+  // sample distance d_v is |A_v| (d + d^2 / R + d^3 / (3 R^2)). The cones add up to the mesh volume, computed here
+  // independently from the triangles.
+  FluidLattice lattice(LatticeSpec{.global_nodes = {24, 24, 24}, .periodic = {true, true, true},
+                                   .collision = CollisionParams{.model = CollisionModel::trt, .tau = 1.0}},
+                       MPI_COMM_WORLD);
+  lattice.initialize();
+  ImmersedBoundary ibm(lattice, {});
+  const TriangleMesh unit = make_sphere_mesh(642);
+  const double radius = 4.0;
+  const Vec3 centre{10.3, 10.6, 9.8};
+  std::vector<Vec3> x;
+  for (const auto& p : unit.vertices_m) x.push_back(centre + radius * p);
+  const auto a0 = offset_area_vectors(x, unit.vertices_m, std::vector<double>(x.size(), 0.0), unit.triangles);
+  std::vector<double> area;
+  for (const auto& a : a0) area.push_back(common::norm(a));
+  const TractionResult t = fluid_traction(ibm, lattice, {x, unit.vertices_m, area, unit.triangles}, {},
+                                          TractionArea::scaled_membrane);
+  double mesh_volume = 0.0;
+  for (const auto& tri : unit.triangles) {
+    const Vec3& p0 = x[static_cast<std::size_t>(tri[0])];
+    mesh_volume += common::dot(p0 - centre, common::cross(x[static_cast<std::size_t>(tri[1])] - p0,
+                                                          x[static_cast<std::size_t>(tri[2])] - p0)) / 6.0;
+  }
+  double expected = mesh_volume;
+  double enclosed = 0.0;
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    const double d = t.sample_distance_lu[v];
+    EXPECT_GE(d, 0.0);
+    EXPECT_LE(d, 2.0 * std::sqrt(3.0));   // a 4-point stencil node is at most 2 lu from the marker along each axis
+    expected += area[v] * (d + d * d / radius + d * d * d / (3.0 * radius * radius));
+    enclosed += t.enclosed_volume_lu[v];
+  }
+  // Simpson's rule is exact for the quadratic parallel areas: round-off of ~600 terms.
+  EXPECT_NEAR(enclosed, expected, 1e-10 * expected);
+  EXPECT_GT(enclosed, 1.5 * mesh_volume);   // the shell is not small: 1-2 lu around a 4 lu sphere
 }
 
 TEST(MedianFilter, RemovesASpikeAndKeepsAUniformField) {
