@@ -144,8 +144,8 @@ std::pair<double, double> free_stiff_cell_on_axis(const std::string& name, bool 
   text = hs::test::replaced(text, "setup = \"drag\"", "setup = \"lift\"");
   text = hs::test::replaced(text, "radial_position = 0.5", "radial_position = 0.0");
   text = hs::test::replaced(text, "[membrane]", "[membrane]\nshear_modulus_N_m = 2.5e-3\n");
-  text = hs::test::replaced(text, "[numerics]", std::string("[numerics]\ndrive_on_enclosed_volume = ") +
-                                                    (drive_on_enclosed_volume ? "true" : "false") + "\n");
+  text = hs::test::replaced(text, "drive_on_enclosed_volume = true", std::string("drive_on_enclosed_volume = ") +
+                                                                         (drive_on_enclosed_volume ? "true" : "false"));
   const auto dir = hs::test::write_case_text("tube_cell_" + name, text);
   EXPECT_EQ(run("run --quiet " + dir.string() + " --output " + (dir / "out").string()).code, 1);
   const auto csv = hs::common::read_csv(dir / "out" / "timeseries.csv");
