@@ -139,9 +139,10 @@ std::vector<double> enclosed_volumes(const SurfaceSample& surface, const Paralle
   std::vector<double> volume(nv);
   for (std::size_t v = 0; v < nv; ++v) {
     const double d = distance[v];
-    const double cone = common::dot(surface.x_lu[v] - c, parallel.area(v, 0.0)) / 3.0;
-    const double shell = d / 6.0 * (common::norm(parallel.area(v, 0.0)) + 4.0 * common::norm(parallel.area(v, 0.5 * d)) +
-                                    common::norm(parallel.area(v, d)));
+    const common::Vec3 own = parallel.area(v, 0.0);
+    const double cone = common::dot(surface.x_lu[v] - c, own) / 3.0;
+    const double shell =
+        d / 6.0 * (common::norm(own) + 4.0 * common::norm(parallel.area(v, 0.5 * d)) + common::norm(parallel.area(v, d)));
     volume[v] = cone + shell;
   }
   return volume;
