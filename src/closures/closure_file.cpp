@@ -95,6 +95,7 @@ ClosureFile ClosureFile::load(const std::filesystem::path& file) {
   c.name = root.string("name");
   c.kind = root.one_of("kind", {"drag", "lift", "deformation", "generic"});
   c.output = root.string("output");
+  if (c.kind == "lift") c.reference_velocity = root.one_of_or("reference_velocity", {"slip", "flow"}, "slip");
   c.expression = root.string("expression");
   read_variables(root, c);
   try {
@@ -117,7 +118,12 @@ void ClosureFile::write(const std::filesystem::path& file) const {
   std::ostringstream s;
   s << "# Learned closure written by `hemoscale fit`; `/` is protected division (1 where |denominator| <= 0.001).\n";
   s << "name       = " << quoted(name) << "\nkind       = " << quoted(kind) << "\noutput     = " << quoted(output)
-    << "\nexpression = " << quoted(expression) << "\n\n[variables]\n";
+    << "\nexpression = " << quoted(expression) << "\n";
+  if (kind == "lift") {
+    s << "reference_velocity = " << quoted(reference_velocity)
+      << "   # F_l = (pi/8) rho d_p^2 C_l |u|^2: u = u_f - u_p (slip) or u_f (flow, relative to the walls)\n";
+  }
+  s << "\n[variables]\n";
   for (std::size_t j = 0; j < variables.size(); ++j) s << variables[j] << " = " << quoted(definitions[j]) << "\n";
   s << "\n[validity]   # min and max of the training inputs\n";
   for (std::size_t j = 0; j < variables.size(); ++j) {

@@ -25,6 +25,8 @@ struct ClosureFile {
   std::string name;
   std::string kind;                         // drag | lift | deformation | generic
   std::string output;                       // what the expression gives: C_d, C_l, DI, or a column name
+  std::string reference_velocity = "slip";  // lift only: the velocity C_l was normalised with, "slip" or "flow"
+                                            // (docs/coefficients.md "Why C_l uses u(r)")
   std::string expression;                   // infix; round-trips through regression::parse_infix
   std::vector<std::string> variables;       // expression variable names (feature order)
   std::vector<std::string> definitions;     // one per variable

@@ -65,6 +65,7 @@ ClosureFile make_closure(const FitRequest& r, const Table& t, const hsr::Validat
   c.name = r.name;
   c.kind = r.kind;
   c.output = r.output;
+  c.reference_velocity = r.reference_velocity;
   c.expression = hsr::to_infix(m.expression, r.features);
   if (!(hsr::parse_infix(c.expression, r.features) == m.expression)) {
     throw std::logic_error("closure expression does not round-trip through the parser: " + c.expression);

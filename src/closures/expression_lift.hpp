@@ -15,6 +15,9 @@ class ExpressionLift final : public LiftClosure {
   /// Loads and compiles the closure file; ConfigError for a bad file or a kind other than "lift".
   explicit ExpressionLift(const std::filesystem::path& file) : ExpressionLift(std::make_unique<LearnedFormula>(file, "lift")) {}
   [[nodiscard]] const ClosureFile& file() const { return formula_->file(); }
+  [[nodiscard]] LiftVelocity reference_velocity() const override {
+    return file().reference_velocity == "flow" ? LiftVelocity::flow : LiftVelocity::slip;
+  }
 
  private:
   explicit ExpressionLift(std::unique_ptr<LearnedFormula> f)

@@ -88,6 +88,7 @@ void read_closure(ConfigSection root, FitRequest& r) {
   r.kind = c.one_of("kind", {"drag", "lift", "deformation", "generic"});
   const std::string default_output = r.kind == "drag" ? "C_d" : r.kind == "lift" ? "C_l" : r.kind == "deformation" ? "DI" : r.target;
   r.output = c.string_or("output", default_output);
+  if (r.kind == "lift") r.reference_velocity = c.one_of_or("reference_velocity", {"slip", "flow"}, "slip");
   auto vars = root.section_or_empty("variables");
   for (const auto& f : r.features) {
     const auto input = find_input(f);

@@ -14,7 +14,8 @@ namespace hs::closures {
 /// FIT.toml:
 ///   [data]    file = "dataset.csv" (relative to FIT.toml), target = "cd", features = ["di", "re_p"],
 ///             test_fraction = 0.2, folds = 5
-///   [closure] name = "cd_di_rep", kind = "drag" | "lift" | "deformation" | "generic", output = "C_d"
+///   [closure] name = "cd_di_rep", kind = "drag" | "lift" | "deformation" | "generic", output = "C_d",
+///             reference_velocity = "slip" | "flow" (lift only: the velocity the target C_l was normalised with)
 ///   [variables] optional definitions per feature (closure inputs have built-in ones)
 ///   [search]  engine = "full" | "gplearn" (which defaults), then any of: functions, population_size,
 ///             generations, tournament_size, const_range, init_depth, metric, parsimony_coefficient
@@ -29,6 +30,7 @@ struct FitRequest {
   std::vector<std::string> features;
   std::vector<std::string> definitions;   // one per feature
   std::string name, kind, output;
+  std::string reference_velocity = "slip";   // lift only
   hs::regression::SearchSettings search;
   hs::regression::ValidationSettings validation;
   bool plot = true;

@@ -75,6 +75,24 @@ TEST(ClosureFile, GoodFileLoadsAndRoundTrips) {
   EXPECT_EQ(d.seed, 3);
 }
 
+TEST(ClosureFile, LiftReferenceVelocityRoundTripsAndIsCheckedAndOnlyForLift) {
+  const std::string lift = replaced(replaced(good, "kind = \"drag\"", "kind = \"lift\"\nreference_velocity = \"flow\""),
+                                    "output = \"C_d\"", "output = \"C_l\"");
+  const auto c = hc::ClosureFile::load(write("lift_flow", lift));
+  EXPECT_EQ(c.reference_velocity, "flow");
+  const fs::path again = fs::temp_directory_path() / "hs_closure_lift_again.toml";
+  c.write(again);
+  EXPECT_EQ(hc::ClosureFile::load(again).reference_velocity, "flow");
+  EXPECT_EQ(hc::ExpressionLift(again).reference_velocity(), hc::LiftVelocity::flow);
+  // Absent: the slip, as Saffman-Mei and the files written before the key existed.
+  const auto old = hc::ClosureFile::load(write("lift_old", replaced(good, "kind = \"drag\"", "kind = \"lift\"")));
+  EXPECT_EQ(old.reference_velocity, "slip");
+  const auto bad = error_of("lift_bad", replaced(lift, "\"flow\"", "\"fluid\""));
+  EXPECT_NE(bad.find("reference_velocity"), std::string::npos) << bad;
+  const auto drag = error_of("drag_ref", replaced(good, "kind = \"drag\"", "kind = \"drag\"\nreference_velocity = \"flow\""));
+  EXPECT_NE(drag.find("reference_velocity"), std::string::npos) << drag;
+}
+
 TEST(ClosureFile, TypoInExpressionVariableIsRejected) {
   const auto msg = error_of("typo_expr", replaced(good, "24/re_p*(1", "24/Re_p*(1"));
   EXPECT_NE(msg.find("expression"), std::string::npos) << msg;

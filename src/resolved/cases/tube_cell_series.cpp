@@ -82,18 +82,25 @@ double TubeCellSeries::lift_N(const TubeCellSample& s) const {
   return (s.force_N.x * s.centroid_m.x + s.force_N.y * s.centroid_m.y) / r;
 }
 
+double TubeCellSeries::undisturbed_speed_m_s(const TubeCellSample& s) const {
+  return common::poiseuille_velocity(config_.u_max_m_s, radial_m(s), config_.radius_m);
+}
+
 double TubeCellSeries::relative_speed_m_s(const TubeCellSample& s) const {
-  return common::poiseuille_velocity(config_.u_max_m_s, radial_m(s), config_.radius_m) - s.axial_velocity_m_s;
+  return undisturbed_speed_m_s(s) - s.axial_velocity_m_s;
 }
 
 std::vector<double> TubeCellSeries::row(const TubeCellSample& s) const {
   const double u = relative_speed_m_s(s);
+  // Cl is normalised by the undisturbed flow speed u(r), not by the free cell's small slip (docs/coefficients.md
+  // "Why Cl uses u(r)"): lift / slip^2 had a period-to-period spread larger than its mean.
+  const double u_flow = undisturbed_speed_m_s(s);
   const double rho = config_.density_kg_m3;
   const double r = radial_m(s);
   const double traction_lift = r < 1e-12 ? s.traction_force_N.x
                                          : (s.traction_force_N.x * s.centroid_m.x + s.traction_force_N.y * s.centroid_m.y) / r;
   return {s.time_s, drag_N(s), lift_N(s), common::force_coefficient(drag_N(s), rho, u, particle_diameter_m_),
-          common::force_coefficient(lift_N(s), rho, u, particle_diameter_m_), s.di, s.inclination_rad,
+          common::force_coefficient(lift_N(s), rho, u_flow, particle_diameter_m_), s.di, s.inclination_rad,
           s.centroid_m.x, s.centroid_m.y, s.centroid_m.z, r / config_.radius_m, s.axial_velocity_m_s,
           s.traction_force_N.z, traction_lift};
 }

@@ -48,7 +48,8 @@ class TubeCellSeries {
 
  private:
   [[nodiscard]] double radial_m(const TubeCellSample& s) const;
-  [[nodiscard]] double relative_speed_m_s(const TubeCellSample& s) const;
+  [[nodiscard]] double undisturbed_speed_m_s(const TubeCellSample& s) const;   // u(r) at the centre of mass
+  [[nodiscard]] double relative_speed_m_s(const TubeCellSample& s) const;      // u(r) - u_p
   [[nodiscard]] double drag_N(const TubeCellSample& s) const { return s.force_N.z; }
   [[nodiscard]] double lift_N(const TubeCellSample& s) const;
   [[nodiscard]] std::vector<double> column(int which) const;

@@ -119,8 +119,12 @@ void CfdDemCoupling::particle_forces() {
     if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
     if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
     if (closures_.lift) {
-      const double ur = norm(uf - particle_velocity(p, i));
-      const Vec3 lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(in) * ur * ur) * radial_unit(x);
+      // A C_l fitted on the fluid velocity (the resolved RBC dataset) takes that velocity and its Re_p.
+      const bool flow = closures_.lift->reference_velocity() == hs::closures::LiftVelocity::flow;
+      const double ur = flow ? norm(uf) : norm(uf - particle_velocity(p, i));
+      hs::closures::LiftInputs lift_in = in;
+      if (flow) lift_in.re_p = hs::common::particle_reynolds(d, ur, fluid_.fluid().kinematic_viscosity_m2_s);
+      const Vec3 lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * radial_unit(x);
       f = f + lift;
       for (int m = 0; m < kMarkersPerSphere; ++m) lift_reaction_N_[map_.cell(i, m)] -= lift / kMarkersPerSphere;
     }

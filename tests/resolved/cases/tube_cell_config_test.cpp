@@ -3,12 +3,14 @@
 // cap in Jeffery periods, checked against the formulas they come from.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <sstream>
 
 #include "resolved/cases/tube_cell_config.hpp"
+#include "resolved/cases/tube_cell_series.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -45,6 +47,25 @@ TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
   EXPECT_NEAR(c.lattice_velocity, 0.02, 1e-12);
   EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 10.0 * 2.0, 1e-9);
   EXPECT_EQ(c.spin_up_steps, 305);   // 10 tau > R^2 / nu = 63 steps
+}
+
+TEST(TubeCellSeries, CdUsesTheRelativeSpeedAndClTheUndisturbedSpeed) {
+  const TubeCellConfig c = read_drag_case(0.5);   // U_max = 0.01 m/s, R = 25 um, rho = 1025 kg/m^3
+  const double volume = std::numbers::pi / 6.0 * std::pow(5.0e-6, 3);   // d_p = 5 um exactly
+  TubeCellSeries series(c, volume);
+  // A free cell at r* = 0.6 (on the x axis) moving at 0.9 u(r): u(r) = 0.64 U_max, slip 0.1 u(r).
+  const double u_r = 0.64 * c.u_max_m_s;
+  const TubeCellSample s{.time_s = 1e-3, .force_N = {-2.0e-12, 0.0, 3.0e-11}, .traction_force_N = {},
+                         .centroid_m = {0.6 * c.radius_m, 0.0, 0.0},
+                         .axial_velocity_m_s = 0.9 * u_r, .di = 0.0, .inclination_rad = 0.0, .marker_phase_rad = 0.0};
+  const auto row = series.row(s);
+  const double area = std::numbers::pi / 4.0 * 25.0e-12;
+  const double q_slip = 0.5 * c.density_kg_m3 * std::pow(0.1 * u_r, 2) * area;
+  const double q_flow = 0.5 * c.density_kg_m3 * u_r * u_r * area;
+  const auto columns = tube_cell_columns();
+  const auto at = [&](const std::string& name) { return row[static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin())]; };
+  EXPECT_NEAR(at("cd"), 3.0e-11 / q_slip, 1e-9 * 3.0e-11 / q_slip);
+  EXPECT_NEAR(at("cl"), -2.0e-12 / q_flow, 1e-9 * 2.0e-12 / q_flow);   // toward the axis: negative
 }
 
 }  // namespace
