@@ -46,7 +46,7 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
   c.traction_area = area == "membrane"          ? TractionArea::membrane
                     : area == "sampled_surface" ? TractionArea::sampled_surface
                                                 : TractionArea::scaled_membrane;
-  c.drive_on_enclosed_volume = n.boolean_or("drive_on_enclosed_volume", false);   // coupled_cell.hpp: off until re-measured
+  c.drive_on_enclosed_volume = n.boolean_or("drive_on_enclosed_volume", true);   // coupled_cell.hpp; off only to diagnose
   return c;
 }
 

@@ -39,11 +39,11 @@ TEST(StenosisCli, CellReleasedInsideTheConstrictionIsAnInputError) {
 }
 
 TEST(StenosisCli, StopBeyondThePeriodicImageIsAnInputError) {
-  expect_input_error(variant("far_stop", "stop_x_m = 50.0e-6", "stop_x_m = 80.0e-6"), "stop_x_m");
+  expect_input_error(variant("far_stop", "stop_x_m = 105.0e-6", "stop_x_m = 140.0e-6"), "stop_x_m");
 }
 
 TEST(StenosisCli, UnknownKeyIsAnInputError) {
-  expect_input_error(variant("typo", "stop_x_m = 50.0e-6", "stop_x_m = 50.0e-6\nstop_at_m = 1.0"), "stop_at_m");
+  expect_input_error(variant("typo", "stop_x_m = 105.0e-6", "stop_x_m = 105.0e-6\nstop_at_m = 1.0"), "stop_at_m");
 }
 
 TEST(StenosisCli, QuickRunWritesTheDeformationSeriesAndTheGroups) {
