@@ -20,7 +20,7 @@ struct CellNumerics {
   double membrane_mass_factor = 0.0;  // numerical mass scaling of the membrane; 0 until derived (see the .cpp)
   IbmSettings ibm;
   TractionArea traction_area = TractionArea::scaled_membrane;   // which area the sampled fluid stress acts on
-  bool drive_on_enclosed_volume = false;   // add the body-force drive's share the sampled tractions miss (CouplingSettings)
+  bool drive_on_enclosed_volume = true;    // add the body-force drive's share the sampled tractions miss (CouplingSettings)
   Streaming streaming = Streaming::two_buffer;   // lattice storage: two buffers, or the in-place AA pattern (same results)
   double dt_s = 0.0;                  // derived
 };

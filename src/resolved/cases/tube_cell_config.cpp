@@ -45,6 +45,7 @@ void read_run(hs::common::ConfigSection r, hs::common::ConfigSection o, TubeCell
   c.sample_every_s = r.positive("sample_every_s");
   c.settle_periods = static_cast<int>(r.integer_in_or("settle_periods", 3, 100, 3));   // seed paper: >= 3 periods
   c.settle_spread = r.number_in_or("settle_spread", 1e-6, 1.0, 0.02);
+  c.lift_settle_spread = r.number_in_or("lift_settle_spread", 1e-6, 1.0, 0.1);
   c.checkpoint_every_wall_s = r.positive_or("checkpoint_every_wall_s", 600.0);
   c.vtk_every_s = o.non_negative_or("vtk_every_s", 0.0);
 }

@@ -36,13 +36,14 @@ struct TubeCellConfig {
   double membrane_mass_factor;      // numerical mass scaling of the membrane (see tube_cell_config.cpp)
   IbmSettings ibm;
   TractionArea traction_area;       // which area the sampled fluid stress acts on
-  bool drive_on_enclosed_volume = false;   // CellNumerics: the body-force share the sampled tractions miss
+  bool drive_on_enclosed_volume = true;    // CellNumerics: the body-force share the sampled tractions miss
   // [run]
   double max_time_s;                // cap on simulated time
   double max_jeffery_periods;       // or the cap in Jeffery periods at r* (0: not given)
   double sample_every_s;            // time-series sampling
   int settle_periods;               // whole periods that must agree before stopping (and are averaged)
   double settle_spread;             // relative spread of the per-period means that counts as settled
+  double lift_settle_spread;        // the same for Cl in a lift run (the lift is noisier than DI; tube_cell_series.cpp)
   double checkpoint_every_wall_s;
   // [output]
   double vtk_every_s;               // 0: only the final frame

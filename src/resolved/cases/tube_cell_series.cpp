@@ -3,6 +3,7 @@
 #include "resolved/cases/tube_cell_series.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -23,14 +24,26 @@ enum Column { kDi, kCd, kCl, kInclination, kPhase };
 /// Viscous spin-up times R^2 / nu that a steady window must span at least.
 constexpr double kSpinUpTimes = 5.0;
 
-/// max - min over the trailing `count` samples, relative to their mean magnitude.
-double trailing_relative_range(const std::vector<double>& v, std::size_t count) {
+/// max - min over the trailing `count` samples, relative to max(|their mean|, floor).
+double trailing_relative_range(const std::vector<double>& v, std::size_t count, double floor) {
   const auto begin = v.end() - static_cast<std::ptrdiff_t>(count);
   const auto [lo, hi] = std::minmax_element(begin, v.end());
   double mean = 0.0;
   for (auto it = begin; it != v.end(); ++it) mean += *it;
   mean /= static_cast<double>(count);
-  return (*hi - *lo) / std::max(std::abs(mean), 1e-300);
+  return (*hi - *lo) / std::max({std::abs(mean), floor, 1e-300});
+}
+
+/// Spread of the means of the trailing window's three thirds, relative to max(|the window's mean|, floor): the
+/// steady test for a noisy signal (the lift), whose sample-to-sample range never falls to a few per cent.
+double trailing_thirds_spread(const std::vector<double>& v, std::size_t count, double floor) {
+  const std::size_t third = count / 3;
+  const auto begin = v.end() - static_cast<std::ptrdiff_t>(3 * third);
+  std::array<double, 3> means{};
+  for (std::size_t k = 0; k < 3 * third; ++k) means[k / third] += begin[static_cast<std::ptrdiff_t>(k)] / static_cast<double>(third);
+  const auto [lo, hi] = std::minmax_element(means.begin(), means.end());
+  const double mean = (means[0] + means[1] + means[2]) / 3.0;
+  return (*hi - *lo) / std::max({std::abs(mean), floor, 1e-300});
 }
 
 nlohmann::json average_json(const PeriodAverage& a) {
@@ -128,18 +141,29 @@ double TubeCellSeries::steady_window_s() const {
 }
 
 bool TubeCellSeries::settled() const {
-  // Each set-up settles on what the dataset takes from it: DI from the lift run, Cd from the drag run. The lift
-  // run's Cd is the small difference of large forces at a small slip (measured +-10 % at r* 0.7), and Cl fluctuates
-  // about zero near the axis, where a relative spread is meaningless.
-  const auto signal = column(config_.setup == TubeCellSetup::lift ? kDi : kCd);
-  if (has_settled(signal, config_.sample_every_s, config_.settle_periods, kTransientFraction, config_.settle_spread)) {
+  // Each set-up settles on what the dataset takes from it: Cd from the drag run; DI and Cl from the lift run (the
+  // lift run's Cd is the small difference of large forces at a small slip, measured +-10 % at r* 0.7).
+  if (config_.setup == TubeCellSetup::drag) return signal_settled(column(kCd), config_.settle_spread, 0.0, false);
+  // Cl near the axis fluctuates about a small mean, where a relative spread means nothing: its floor is the lift
+  // of 1 % of the Stokes drag 3 pi mu d_p u(r) on the volume-equivalent sphere, 0.01 x 24 / Re_p in Cl units.
+  const double u = samples_.empty() ? 0.0 : undisturbed_speed_m_s(samples_.back());
+  const double re_p = common::particle_reynolds(particle_diameter_m_, u, config_.kinematic_viscosity_m2_s);
+  const double cl_floor = re_p > 0.0 ? 0.01 * 24.0 / re_p : 0.0;
+  return signal_settled(column(kDi), config_.settle_spread, 0.0, false) &&
+         signal_settled(column(kCl), config_.lift_settle_spread, cl_floor, true);
+}
+
+bool TubeCellSeries::signal_settled(const std::vector<double>& signal, double spread, double floor, bool noisy) const {
+  // Periodic: settle_periods whole periods after the transient agree within `spread`.
+  if (has_settled(signal, config_.sample_every_s, config_.settle_periods, kTransientFraction, spread, floor)) {
     return true;
   }
-  // Steady (not periodic) motion: constant within settle_spread over a window that spans the spin-up and one
-  // Jeffery period, so a slow tumble cannot pass for steady; the window is at most half the series.
+  // Steady (not periodic) motion: constant within `spread` over a window that spans the spin-up and one Jeffery
+  // period, so a slow tumble cannot pass for steady; the window is at most half the series. A noisy signal is
+  // judged by the means of the window's thirds, a smooth one by its whole range.
   const auto window = static_cast<std::size_t>(std::ceil(steady_window_s() / config_.sample_every_s));
-  if (window < 4 || 2 * window > signal.size()) return false;
-  return trailing_relative_range(signal, window) <= config_.settle_spread;
+  if (window < 6 || 2 * window > signal.size()) return false;
+  return (noisy ? trailing_thirds_spread(signal, window, floor) : trailing_relative_range(signal, window, floor)) <= spread;
 }
 
 nlohmann::json TubeCellSeries::results() const {

@@ -33,8 +33,8 @@ class TubeCellSeries {
   TubeCellSeries(const TubeCellConfig& config, double cell_volume_m3);
   void add(const TubeCellSample& sample);
   [[nodiscard]] std::vector<double> row(const TubeCellSample& sample) const;
-  /// Whether DI (lift set-up) or Cd (drag set-up) has settled over settle_periods whole periods (measure/periodic_signal), or is steady
-  /// within settle_spread over steady_window_s().
+  /// Whether Cd (drag set-up), or DI and Cl (lift set-up), have settled over settle_periods whole periods
+  /// (measure/periodic_signal), or are steady over steady_window_s() (Cl within lift_settle_spread).
   [[nodiscard]] bool settled() const;
   /// Period averages, flow mode and dimensionless groups for summary.json "results".
   [[nodiscard]] nlohmann::json results() const;
@@ -53,6 +53,9 @@ class TubeCellSeries {
   [[nodiscard]] double drag_N(const TubeCellSample& s) const { return s.force_N.z; }
   [[nodiscard]] double lift_N(const TubeCellSample& s) const;
   [[nodiscard]] std::vector<double> column(int which) const;
+  /// Whether one signal has settled: `settle_periods` periods agree, or it is steady (whole range, or for a noisy
+  /// signal the means of three thirds of the window) within `spread` of max(|mean|, floor).
+  [[nodiscard]] bool signal_settled(const std::vector<double>& signal, double spread, double floor, bool noisy) const;
 
   TubeCellConfig config_;
   double particle_diameter_m_;

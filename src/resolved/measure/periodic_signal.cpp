@@ -96,14 +96,15 @@ PeriodAverage average_over_periods(std::span<const double> signal, double dt, co
   return out;
 }
 
-bool has_settled(std::span<const double> signal, double dt, int periods, double transient_fraction, double relative_spread) {
+bool has_settled(std::span<const double> signal, double dt, int periods, double transient_fraction, double relative_spread,
+                 double floor) {
   const auto skip = static_cast<std::size_t>(transient_fraction * static_cast<double>(signal.size()));
   const auto tail = signal.subspan(skip);
   const PeriodEstimate p = detect_period(tail, dt);
   if (p.steady) return tail.size() >= 8;
   if (!p.periodic) return false;
   const PeriodAverage a = average_over_periods(tail, dt, p, periods);
-  return a.periods >= periods && a.spread <= relative_spread * std::max(std::abs(a.mean), 1e-300);
+  return a.periods >= periods && a.spread <= relative_spread * std::max({std::abs(a.mean), floor, 1e-300});
 }
 
 }  // namespace hs::resolved

@@ -33,8 +33,8 @@ PeriodAverage average_over_periods(std::span<const double> signal, double sample
                                    int periods);
 
 /// Whether a run may stop: `periods` whole periods exist after discarding the first `transient_fraction` of the
-/// signal, and the per-period means agree within `relative_spread` of the mean magnitude.
+/// signal, and the per-period means agree within `relative_spread` of max(|mean|, floor).
 bool has_settled(std::span<const double> signal, double sample_interval_s, int periods, double transient_fraction,
-                 double relative_spread);
+                 double relative_spread, double floor = 0.0);
 
 }  // namespace hs::resolved

@@ -68,5 +68,32 @@ TEST(TubeCellSeries, CdUsesTheRelativeSpeedAndClTheUndisturbedSpeed) {
   EXPECT_NEAR(at("cl"), -2.0e-12 / q_flow, 1e-9 * 2.0e-12 / q_flow);   // toward the axis: negative
 }
 
+/// A lift run's series at r* = 0.5 over 2.2 steady windows: DI constant, the lift force given by lift(t).
+template <class Lift>
+bool lift_run_settles(Lift lift) {
+  TubeCellConfig c = read_drag_case(0.5);
+  c.setup = TubeCellSetup::lift;
+  TubeCellSeries series(c, 94.1e-18);
+  const double r = c.radial_position * c.radius_m;
+  const double u = c.u_max_m_s * (1.0 - c.radial_position * c.radial_position);
+  const auto n = static_cast<int>(2.2 * series.steady_window_s() / c.sample_every_s);
+  for (int k = 1; k <= n; ++k) {
+    const double t = k * c.sample_every_s;
+    series.add({.time_s = t, .force_N = {lift(k), 0.0, 0.0}, .traction_force_N = {}, .centroid_m = {r, 0.0, 0.0},
+                .axial_velocity_m_s = 0.99 * u, .di = 0.45, .inclination_rad = 0.0, .marker_phase_rad = 0.0});
+  }
+  return series.settled();
+}
+
+TEST(TubeCellSeries, ALiftRunSettlesOnlyWhenItsLiftHasSettledToo) {
+  // Noise of +-10 % about a steady lift: the thirds' means agree (within 10 %), so the run may stop.
+  EXPECT_TRUE(lift_run_settles([](int k) { return -1e-11 * (1.0 + 0.1 * ((k % 2) ? 1.0 : -1.0)); }));
+  // The same lift halving over the run (r* 0.7, Re 0.5 at dx = 1 um did): not settled, although DI is.
+  EXPECT_FALSE(lift_run_settles([](int k) { return -1e-11 * (1.0 - k / 1000.0); }));
+  // A lift fluctuating about zero (near the axis) settles on the floor, 1 % of the Stokes drag 3 pi mu d_p u(r)
+  // (~4e-10 N here): +-1e-13 N of noise is far below it.
+  EXPECT_TRUE(lift_run_settles([](int k) { return (k % 2) ? 1e-13 : -1e-13; }));
+}
+
 }  // namespace
 }  // namespace hs::resolved
