@@ -146,15 +146,28 @@ struct StencilEntry {
 };
 
 std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const FluidLattice& lattice,
-                                         std::span<const common::Vec3> x_lu, std::vector<std::size_t>& first) {
+                                         std::span<const common::Vec3> x_lu, std::vector<std::size_t>& first,
+                                         std::vector<std::int32_t>& node_slot) {
   const std::size_t n = x_lu.size();
   std::vector<StencilEntry> entries;
   first.assign(n + 1, 0);
   const auto& layout = lattice.layout();
+  node_slot.resize(layout.volume(), -1);
+  // The stencils of markers ~1 lu apart overlap several times over; reading a node's 19 populations is a scatter
+  // through memory (AA layout), so each node is read once and its entry copied (the same numbers, bit for bit).
+  std::vector<std::size_t> touched;
   for (std::size_t k = 0; k < n; ++k) {
     first[k] = entries.size();
     ibm.for_each_local_node(x_lu[k], [&](int x, int y, int z, double w) {
       const auto node = static_cast<std::size_t>(layout.index(x, y, z));
+      if (node_slot[node] >= 0) {
+        StencilEntry e = entries[static_cast<std::size_t>(node_slot[node])];
+        e.weight = w;
+        entries.push_back(e);
+        return;
+      }
+      node_slot[node] = static_cast<std::int32_t>(entries.size());
+      touched.push_back(node);
       if (!lattice.is_fluid(x, y, z)) {
         entries.push_back({node, w, 0.0, {}, false});
         return;
@@ -163,6 +176,7 @@ std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const Flu
       entries.push_back({node, w, m.rho, m.rho * m.u, true});
     });
   }
+  for (const std::size_t node : touched) node_slot[node] = -1;
   first[n] = entries.size();
   // Cut stencils (see the class comment): renormalise over the fluid nodes of every rank.
   std::vector<double> fluid_weight(n, 0.0);
@@ -186,7 +200,7 @@ ForcingReport ImmersedBoundary::apply(const Markers& markers) {
   // The populations do not change during the iterations, only the force field: rho and j0 = sum f c + F_body/2 are
   // read once, and the half-force momentum of a node is j0 + F_ibm/2 (the same numbers moments() would give).
   std::vector<std::size_t> first;
-  const std::vector<StencilEntry> entries = gather_stencils(*this, lattice_, markers.x_lu, first);
+  const std::vector<StencilEntry> entries = gather_stencils(*this, lattice_, markers.x_lu, first, node_slot_);
   const auto& layout = lattice_.layout();
   const std::span<double> field = lattice_.force_field();
   const std::size_t stride = layout.volume();

@@ -2,6 +2,7 @@
 // Immersed boundary coupling on the lattice: interpolation to markers, spreading of marker forces, multi-direct forcing.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
@@ -72,6 +73,9 @@ class ImmersedBoundary {
 
   FluidLattice& lattice_;
   IbmSettings settings_;
+  // apply(): per lattice node, its index among the nodes the stencils touch this step (-1: none). Neighbouring
+  // markers' stencils overlap, so each node's moments are read once; reset after use, sized on first use.
+  std::vector<std::int32_t> node_slot_;
 };
 
 }  // namespace hs::resolved
