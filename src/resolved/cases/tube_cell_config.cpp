@@ -57,6 +57,11 @@ double jeffery_period_s(const TubeCellConfig& c) {
   return gamma > 0.0 ? jeffery_period(gamma) : std::numeric_limits<double>::infinity();
 }
 
+double membrane_relaxation_time_s(const TubeCellConfig& c) {
+  constexpr double kCellRadius_m = 0.5 * 7.82e-6;   // D0 / 2 (seed paper section 3.2), as in Ca
+  return c.membrane.material.deformation_friction_Pa_s_m * kCellRadius_m * kCellRadius_m / c.membrane.material.shear_modulus_N_m;
+}
+
 TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   TubeCellConfig c{};
   auto root = file.root();
@@ -85,7 +90,7 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
     if (c.radial_position == 0.0) {
       root.section("run").fail("max_jeffery_periods", "has no meaning on the axis (no shear, no tumbling); give max_time_s");
     }
-    c.max_time_s = c.max_jeffery_periods * jeffery_period_s(c);
+    c.max_time_s = kMembraneTransientTimes * membrane_relaxation_time_s(c) + c.max_jeffery_periods * jeffery_period_s(c);
   }
   c.spin_up_steps = std::max(std::lround(c.radius_m * c.radius_m / c.kinematic_viscosity_m2_s / c.dt_s),
                              std::lround(kSpinUpTaus * c.collision.tau));

@@ -39,7 +39,8 @@ struct TubeCellConfig {
   bool drive_on_enclosed_volume = true;    // CellNumerics: the body-force share the sampled tractions miss
   // [run]
   double max_time_s;                // cap on simulated time
-  double max_jeffery_periods;       // or the cap in Jeffery periods at r* (0: not given)
+  double max_jeffery_periods;       // or the cap in Jeffery periods at r* (0: not given), counted after the membrane
+                                    // transient (kMembraneTransientTimes relaxation times)
   double sample_every_s;            // time-series sampling
   int settle_periods;               // whole periods that must agree before stopping (and are averaged)
   double settle_spread;             // relative spread of the per-period means that counts as settled
@@ -57,6 +58,14 @@ struct TubeCellConfig {
 /// Jeffery period 2 pi (r_e + 1/r_e) / gamma_dot of a spheroid of aspect ratio r_e = 0.37 (the RBC's thickness over
 /// diameter; Jeffery 1922), i.e. 19.3 / gamma_dot, at the undisturbed shear rate at the cell's r*; infinite on the axis.
 double jeffery_period_s(const TubeCellConfig& c);
+
+/// Kelvin-Voigt relaxation time of the membrane, zeta a^2 / k_s: its deformation friction against its shear modulus
+/// over the cell radius a = D0 / 2 = 3.91 um (0.17 s with the defaults; ~0.1-0.3 s measured for RBC shape recovery,
+/// Hochmuth et al. 1979). The cell's shape needs a few of these to respond to the flow; 0 without friction.
+double membrane_relaxation_time_s(const TubeCellConfig& c);
+
+/// Membrane relaxation times discarded as start-up transient before a tube-cell run may settle (e^-3 = 5 % left).
+inline constexpr double kMembraneTransientTimes = 3.0;
 
 /// Reads and checks the whole case strictly. `quick` caps the run at 40 samples (CI); dx is kept, because at
 /// dx = 2 um the 258-vertex mesh is denser than the lattice (mean edge ~0.35 lu) and multi-direct forcing

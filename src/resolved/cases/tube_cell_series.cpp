@@ -153,33 +153,46 @@ bool TubeCellSeries::settled() const {
          signal_settled(column(kCl), config_.lift_settle_spread, cl_floor, true);
 }
 
+std::size_t TubeCellSeries::transient_samples() const {
+  // The first quarter of the series, and at least kMembraneTransientTimes membrane relaxation times, during which the
+  // cell keeps close to its rest shape (DI ~0.50) whatever the flow (docs/resolved-coupling.md "The membrane transient").
+  const double transient_s = kMembraneTransientTimes * membrane_relaxation_time_s(config_);
+  return std::max(static_cast<std::size_t>(kTransientFraction * static_cast<double>(samples_.size())),
+                  static_cast<std::size_t>(std::ceil(transient_s / config_.sample_every_s)));
+}
+
 bool TubeCellSeries::signal_settled(const std::vector<double>& signal, double spread, double floor, bool noisy) const {
+  const std::size_t skip = transient_samples();
+  if (skip >= signal.size()) return false;
+  const std::vector<double> settled_part(signal.begin() + static_cast<std::ptrdiff_t>(skip), signal.end());
   // Periodic: settle_periods whole periods after the transient agree within `spread`.
-  if (has_settled(signal, config_.sample_every_s, config_.settle_periods, kTransientFraction, spread, floor)) {
-    return true;
-  }
+  if (has_settled(settled_part, config_.sample_every_s, config_.settle_periods, 0.0, spread, floor)) return true;
   // Steady (not periodic) motion: constant within `spread` over a window that spans the spin-up and one Jeffery
-  // period, so a slow tumble cannot pass for steady; the window is at most half the series. A noisy signal is
-  // judged by the means of the window's thirds, a smooth one by its whole range.
+  // period, so a slow tumble cannot pass for steady; the window is at most half the part after the transient. A
+  // noisy signal is judged by the means of the window's thirds, a smooth one by its whole range.
   const auto window = static_cast<std::size_t>(std::ceil(steady_window_s() / config_.sample_every_s));
-  if (window < 6 || 2 * window > signal.size()) return false;
-  return (noisy ? trailing_thirds_spread(signal, window, floor) : trailing_relative_range(signal, window, floor)) <= spread;
+  if (window < 6 || 2 * window > settled_part.size()) return false;
+  return (noisy ? trailing_thirds_spread(settled_part, window, floor) : trailing_relative_range(settled_part, window, floor)) <=
+         spread;
 }
 
 nlohmann::json TubeCellSeries::results() const {
   nlohmann::json r;
   if (samples_.empty()) return r;
   const double dt = config_.sample_every_s;
-  const auto di = column(kDi);
-  const auto cd = column(kCd);
-  const auto cl = column(kCl);
+  // Averages over the part after the transient; a run stopped before it ends (a cap, a quick run) uses all of it.
+  const std::size_t skip = transient_samples() + 8 <= samples_.size() ? transient_samples() : 0;
+  const auto after = [skip](std::vector<double> v) { return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(skip), v.end()); };
+  const auto di = after(column(kDi));
+  const auto cd = after(column(kCd));
+  const auto cl = after(column(kCl));
   PeriodEstimate period = detect_period(di, dt);
   if (!period.periodic && !period.steady) period = detect_period(cd, dt);
   const auto a_di = average_over_periods(di, dt, period, config_.settle_periods);
   const auto a_cd = average_over_periods(cd, dt, period, config_.settle_periods);
   const auto a_cl = average_over_periods(cl, dt, period, config_.settle_periods);
-  const auto inclination = column(kInclination);
-  const auto phase = column(kPhase);
+  const auto inclination = after(column(kInclination));
+  const auto phase = after(column(kPhase));
   // Undisturbed flow and groups at the mean (last-sample) position of the centre of mass.
   const TubeCellSample& last = samples_.back();
   const double r_m = radial_m(last);
@@ -209,6 +222,8 @@ nlohmann::json TubeCellSeries::results() const {
   r["ca"] = common::capillary_number(mu, gamma, 0.5 * kCellDiameterD0_m, config_.membrane.material.shear_modulus_N_m);
   r["particle_diameter_m"] = particle_diameter_m_;
   r["shear_rate_1_s"] = gamma;
+  r["membrane_relaxation_time_s"] = membrane_relaxation_time_s(config_);
+  r["transient_s"] = static_cast<double>(skip) * dt;   // start of the averaged part (0: the run ended inside the transient)
   r["undisturbed_velocity_m_s"] = u_fluid;
   r["u_max_m_s"] = config_.u_max_m_s;
   r["samples"] = samples_.size();

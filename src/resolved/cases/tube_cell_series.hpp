@@ -53,6 +53,8 @@ class TubeCellSeries {
   [[nodiscard]] double drag_N(const TubeCellSample& s) const { return s.force_N.z; }
   [[nodiscard]] double lift_N(const TubeCellSample& s) const;
   [[nodiscard]] std::vector<double> column(int which) const;
+  /// Samples before the end of the start-up transient (first quarter, and kMembraneTransientTimes relaxation times).
+  [[nodiscard]] std::size_t transient_samples() const;
   /// Whether one signal has settled: `settle_periods` periods agree, or it is steady (whole range, or for a noisy
   /// signal the means of three thirds of the window) within `spread` of max(|mean|, floor).
   [[nodiscard]] bool signal_settled(const std::vector<double>& signal, double spread, double floor, bool noisy) const;
