@@ -18,6 +18,7 @@ struct CampaignArgs {
   std::string dir;
   bool status = false;
   bool retry_failed = false;
+  bool reopen_done = false;
   int max_runs = -1;
 };
 
@@ -25,6 +26,7 @@ int run_campaign(const CampaignArgs& args) {
   const auto spec = hs::campaign::read_campaign_spec(args.dir);
   hs::campaign::CampaignRunner runner(spec, {.executable = std::filesystem::read_symlink("/proc/self/exe"),
                                              .retry_failed = args.retry_failed,
+                                             .reopen_done = args.reopen_done,
                                              .show_progress = hs::common::Progress::terminal_attached(),
                                              .max_runs = args.max_runs});
   if (args.status) {
@@ -45,6 +47,8 @@ void add_campaign_command(CLI::App& cli, Action& action) {
   cmd->add_option("CAMPAIGN_DIR", args->dir, "campaign folder")->required()->check(CLI::ExistingDirectory);
   cmd->add_flag("--status", args->status, "print what is done, failed and left; run nothing");
   cmd->add_flag("--retry-failed", args->retry_failed, "run failed runs again");
+  cmd->add_flag("--reopen-done", args->reopen_done,
+                "run finished runs again, from their last checkpoint where they have one (after a stricter stopping rule)");
   cmd->add_option("--max-runs", args->max_runs, "start at most this many runs in this invocation");
   cmd->callback([&action, args] { action = [args] { return run_campaign(*args); }; });
 }

@@ -102,8 +102,16 @@ int CampaignRunner::run() {
   int finished = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (runs[i].state == RunState::failed && options_.retry_failed) runs[i].state = RunState::pending;
+    if (runs[i].state == RunState::done && options_.reopen_done) {
+      const bool resumable = common::Checkpoint::exists(runs[i].output_dir() / "checkpoint");
+      runs[i].state = resumable ? RunState::resumable : RunState::pending;   // pending: afresh, its output set aside
+      runs[i].reason.clear();
+      std::filesystem::remove(runs[i].dir / "status.json");   // on disk too: an interrupted resume stays reopened
+      write_run_status(runs[i]);
+    }
     if (runs[i].state == RunState::pending || runs[i].state == RunState::resumable) queue.push_back(i);
   }
+  write_dataset(spec_, runs);   // the rows of the runs done now (reopened runs drop out until they finish again)
   std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
   int started = 0;
   std::size_t next = 0;

@@ -15,6 +15,8 @@ namespace hs::campaign {
 struct CampaignOptions {
   std::filesystem::path executable;   // the hemoscale binary that runs each case
   bool retry_failed = false;          // run failed runs again
+  bool reopen_done = false;           // run finished runs again: from their last checkpoint (after a stricter stopping
+                                      // rule a run that now settles later goes on), or afresh without one
   bool show_progress = true;
   int max_runs = -1;                  // stop after starting this many runs (-1: all); for tests and trials
 };

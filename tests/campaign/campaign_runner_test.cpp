@@ -73,6 +73,23 @@ TEST(Campaign, RunsEveryPointOnceAndAssemblesTheDataset) {
   EXPECT_NE(second.output.find("2 done"), std::string::npos) << second.output;
 }
 
+TEST(Campaign, ReopenedRunsGoAgainAndLeaveTheDatasetUntilTheyFinish) {
+  const auto dir = make_campaign("reopen", "[0.1, 0.2]");
+  ASSERT_EQ(run("campaign " + dir.string()).code, 0);
+  // --max-runs 0 starts nothing: the reopened runs wait (tube-poiseuille keeps no checkpoint, so they will start
+  // afresh), and the dataset lists no row until they finish again.
+  const auto held = run("campaign " + dir.string() + " --reopen-done --max-runs 0");
+  EXPECT_EQ(held.code, 0) << held.output;
+  EXPECT_NE(held.output.find("0 done, 0 failed, 0 resumable, 2 pending"), std::string::npos) << held.output;
+  EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").rows.size(), 0u);
+  // The next invocation runs them: done again, rows back, the first output kept beside the new one.
+  const auto again = run("campaign " + dir.string());
+  EXPECT_EQ(again.code, 0) << again.output;
+  EXPECT_NE(again.output.find("2 done"), std::string::npos) << again.output;
+  EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").rows.size(), 2u);
+  EXPECT_TRUE(fs::exists(dir / "runs" / "re-0.1" / "output.attempt-1"));
+}
+
 TEST(Campaign, AFailedRunIsRecordedAndDoesNotStopTheOthers) {
   const auto dir = make_campaign("fail", "[0.2, 5000.0]");   // Re = 5000: lattice Mach far above 0.1
   const auto r = run("campaign " + dir.string());
