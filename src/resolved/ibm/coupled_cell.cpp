@@ -95,6 +95,7 @@ void CoupledCell::step() {
 }
 
 void CoupledCell::restore(const CouplingState& state) {
+  ibm_.forget_forced_nodes();   // the lattice's force field was restored with it
   if (state.marker_x_lu.size() != markers_.x_lu.size() || state.marker_u_lu.size() != markers_.u_lu.size()) {
     throw std::invalid_argument("coupling checkpoint: marker count differs");
   }

@@ -115,6 +115,7 @@ MarkerFluid ImmersedBoundary::interpolate(std::span<const common::Vec3> x_lu) co
 
 void ImmersedBoundary::spread(std::span<const common::Vec3> x_lu, std::span<const common::Vec3> f_lu) {
   if (x_lu.size() != f_lu.size()) throw std::invalid_argument("spread: one force per marker");
+  forced_nodes_known_ = false;   // these forces are not tracked: the next apply() clears the whole field
   const std::vector<double> scale = cut_stencil_scale(x_lu);
   for (std::size_t k = 0; k < x_lu.size(); ++k) {
     for_each_local_node(x_lu[k], [&](int x, int y, int z, double w) {
@@ -147,7 +148,7 @@ struct StencilEntry {
 
 std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const FluidLattice& lattice,
                                          std::span<const common::Vec3> x_lu, std::vector<std::size_t>& first,
-                                         std::vector<std::int32_t>& node_slot) {
+                                         std::vector<std::int32_t>& node_slot, std::vector<std::size_t>& touched) {
   const std::size_t n = x_lu.size();
   std::vector<StencilEntry> entries;
   first.assign(n + 1, 0);
@@ -155,7 +156,7 @@ std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const Flu
   node_slot.resize(layout.volume(), -1);
   // The stencils of markers ~1 lu apart overlap several times over; reading a node's 19 populations is a scatter
   // through memory (AA layout), so each node is read once and its entry copied (the same numbers, bit for bit).
-  std::vector<std::size_t> touched;
+  touched.clear();
   for (std::size_t k = 0; k < n; ++k) {
     first[k] = entries.size();
     ibm.for_each_local_node(x_lu[k], [&](int x, int y, int z, double w) {
@@ -196,11 +197,18 @@ std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const Flu
 ForcingReport ImmersedBoundary::apply(const Markers& markers) {
   const std::size_t n = markers.x_lu.size();
   if (markers.u_lu.size() != n || markers.area_lu.size() != n) throw std::invalid_argument("IBM markers: sizes differ");
-  lattice_.clear_force_field();
+  if (forced_nodes_known_) {
+    const std::span<double> old = lattice_.force_field();
+    const std::size_t volume = lattice_.layout().volume();
+    for (const std::size_t node : forced_nodes_) old[node] = old[volume + node] = old[2 * volume + node] = 0.0;
+  } else {
+    lattice_.clear_force_field();
+  }
   // The populations do not change during the iterations, only the force field: rho and j0 = sum f c + F_body/2 are
   // read once, and the half-force momentum of a node is j0 + F_ibm/2 (the same numbers moments() would give).
   std::vector<std::size_t> first;
-  const std::vector<StencilEntry> entries = gather_stencils(*this, lattice_, markers.x_lu, first, node_slot_);
+  const std::vector<StencilEntry> entries = gather_stencils(*this, lattice_, markers.x_lu, first, node_slot_, forced_nodes_);
+  forced_nodes_known_ = true;   // every node this apply() writes is in forced_nodes_ (wall nodes there get nothing)
   const auto& layout = lattice_.layout();
   const std::span<double> field = lattice_.force_field();
   const std::size_t stride = layout.volume();

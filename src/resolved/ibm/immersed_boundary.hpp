@@ -55,6 +55,8 @@ class ImmersedBoundary {
   [[nodiscard]] MarkerFluid interpolate(std::span<const common::Vec3> x_lu) const;
   /// Adds the point forces f_lu (lattice units, momentum per step) at the markers to the force field.
   void spread(std::span<const common::Vec3> x_lu, std::span<const common::Vec3> f_lu);
+  /// After the force field was written elsewhere (a checkpoint restored): the next apply() clears all of it.
+  void forget_forced_nodes() { forced_nodes_known_ = false; }
   /// Multi-direct forcing (Wang, Fan & Luo 2008; resolved-methods.md 2.2 with Guo forcing): clears the force
   /// field, then `iterations` times dF_k = 2 A_k (rho_k U_k - J_k), spread, so the half-force velocity
   /// u = (sum f c + F/2)/rho moves towards U_k at the markers. Collective.
@@ -76,6 +78,10 @@ class ImmersedBoundary {
   // apply(): per lattice node, its index among the nodes the stencils touch this step (-1: none). Neighbouring
   // markers' stencils overlap, so each node's moments are read once; reset after use, sized on first use.
   std::vector<std::int32_t> node_slot_;
+  // The nodes apply() gave a force last time: the next apply() zeroes only them, not the whole field (3 doubles a
+  // node, a memset of the lattice every step). False until then, and after spread(): then the whole field is cleared.
+  std::vector<std::size_t> forced_nodes_;
+  bool forced_nodes_known_ = false;
 };
 
 }  // namespace hs::resolved
