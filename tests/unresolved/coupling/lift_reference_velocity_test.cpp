@@ -13,6 +13,7 @@
 #include "closures/register_builtin.hpp"
 #include "common/geometry/tube.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
+#include "periodic_tube.hpp"
 
 namespace {
 
@@ -40,15 +41,10 @@ struct LiftCheck {
 /// external force is the lift.
 LiftCheck lift_on_sphere(const std::string& reference) {
   const double diameter = 30e-6, r = 0.5 * diameter, length = 2.0 * diameter;
-  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
-  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = diameter / 10, .sides = {}};
-  spec.sides[4].type = SideType::periodic;
-  spec.sides[5].type = SideType::periodic;
-  const FvmGrid grid(tube, spec);
+  const hs::common::Tube tube = test::tube_along_z(diameter, length);
+  const FvmGrid grid = test::periodic_tube_grid(tube, diameter, length);
   const double dt = 1e-5;
-  FvmSolver fluid(grid, {.density_kg_m3 = kRho, .kinematic_viscosity_m2_s = kNu},
-                  {.dt_s = dt, .pressure = {.tolerance = 1e-10, .rel_tol = 0.0}, .momentum_tolerance = 1e-12},
-                  {.mode = FlowDrive::Mode::flow_rate, .axis = 2, .flow_rate_m3_s = 1e-13});
+  FvmSolver fluid = test::tube_plasma(grid, kRho, kNu, dt, 1e-13);
   DemSystem dem({.params = default_particle_params(), .domain = {.box = {{-r, -r, 0.0}, {r, r, length}}, .periodic = {false, false, true}},
                  .time_step_s = dt / 100},
                 &tube);

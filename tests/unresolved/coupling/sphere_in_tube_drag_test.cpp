@@ -12,6 +12,7 @@
 #include "closures/wall_correction.hpp"
 #include "common/geometry/tube.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
+#include "periodic_tube.hpp"
 
 namespace {
 
@@ -43,18 +44,13 @@ DragRun drag_on_axis(double diameter_m, bool two_way) {
   const double u0 = 1e-4;
   const double length = 2.0 * diameter_m;
   const double r = 0.5 * diameter_m;
-  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
-  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = diameter_m / 10, .sides = {}};
-  spec.sides[4].type = SideType::periodic;
-  spec.sides[5].type = SideType::periodic;
-  const FvmGrid grid(tube, spec);
+  const hs::common::Tube tube = test::tube_along_z(diameter_m, length);
+  const FvmGrid grid = test::periodic_tube_grid(tube, diameter_m, length);
   // dt = 1e-5 s (1/20 of R^2 / nu at D = 30 um, above the particle relaxation time m / beta = 1.2 us, which the
   // DEM integrates exactly); 50 steps = 2.6 R^2 / nu at D = 30 um: the disturbance near the sphere (dx^2 / nu =
   // 7.5 us) is settled.
   const double dt = 1e-5;
-  FvmSolver fluid(grid, {.density_kg_m3 = kRho, .kinematic_viscosity_m2_s = kNu},
-                  {.dt_s = dt, .pressure = {.tolerance = 1e-10, .rel_tol = 0.0}, .momentum_tolerance = 1e-12},
-                  {.mode = FlowDrive::Mode::flow_rate, .axis = 2, .flow_rate_m3_s = 0.0});
+  FvmSolver fluid = test::tube_plasma(grid, kRho, kNu, dt, 0.0);
   const ParticleParams params = default_particle_params();
   DemSystem dem({.params = params, .domain = {.box = {{-r, -r, 0.0}, {r, r, length}}, .periodic = {false, false, true}},
                  .time_step_s = dt / 100},   // 0.1 us < 0.1 x Rayleigh time 1.67 us of the default (stiff) spheres
