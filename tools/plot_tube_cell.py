@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# Cd and DI vs time of one tube-cell run, with the averaging window's periods marked (the seed paper's Fig. 10).
+# Cd (drag run) or Cl (lift run) and DI vs time of one tube-cell run, with the averaging window's periods and the end
+# of the membrane transient marked (the seed paper's Fig. 10). A lift run's Cd divides by its near-zero slip: not shown.
 # Usage: /usr/bin/python3 tools/plot_tube_cell.py RUN_DIR [OUT.png]   (RUN_DIR holds timeseries.csv, summary.json)
 import csv
 import json
@@ -25,8 +26,10 @@ def main():
     period_ms = 1e3 * float(res.get("period_s", 0.0) or 0.0)
     what = "period average" if periods > 0 else "mean (no whole period detected)"
     t_ms = [1e3 * float(r["time_s"]) for r in rows]
+    setup = summary.get("setup", "")
+    force = ("cl", "cl_mean", "C_l") if setup == "lift" else ("cd", "cd_mean", "C_d")
     fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
-    for ax, key, mean_key, label in ((axes[0], "cd", "cd_mean", "C_d"), (axes[1], "di", "di_mean", "DI")):
+    for ax, key, mean_key, label in ((axes[0],) + force, (axes[1], "di", "di_mean", "DI")):
         ax.plot(t_ms, [float(r[key]) for r in rows], color="tab:blue", lw=1)
         ax.axhline(res[mean_key], color="k", ls="--", lw=1, label=f"{what} {res[mean_key]:.4g}")
         ax.set_ylabel(label)
@@ -35,8 +38,12 @@ def main():
         for k in range(periods + 1):
             for ax in axes:
                 ax.axvline(t_ms[-1] - k * period_ms, color="tab:red", lw=0.8, alpha=0.6)
+    transient_ms = 1e3 * float(res.get("transient_s", 0.0) or 0.0)
+    if transient_ms > 0:
+        for ax in axes:
+            ax.axvline(transient_ms, color="tab:gray", ls=":", lw=1)
+        axes[1].text(transient_ms, axes[1].get_ylim()[1], " end of transient", fontsize=7, va="top", color="tab:gray")
     axes[1].set_xlabel("time (ms)")
-    setup = summary.get("setup", "")
     axes[0].set_title(f"{setup}: Re = {res['reynolds']:.3g}, r* = {res['r_star_nominal']:.2g}, "
                       f"{res['flow_mode']}, {periods} periods of {period_ms:.3g} ms (red)", fontsize=9)
     fig.tight_layout()
