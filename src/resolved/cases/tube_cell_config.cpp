@@ -58,8 +58,8 @@ double jeffery_period_s(const TubeCellConfig& c) {
 }
 
 double membrane_relaxation_time_s(const TubeCellConfig& c) {
-  constexpr double kCellRadius_m = 0.5 * 7.82e-6;   // D0 / 2 (seed paper section 3.2), as in Ca
-  return c.membrane.material.deformation_friction_Pa_s_m * kCellRadius_m * kCellRadius_m / c.membrane.material.shear_modulus_N_m;
+  const double a = 0.5 * kCellDiameterD0_m;   // as in Ca
+  return c.membrane.material.deformation_friction_Pa_s_m * a * a / c.membrane.material.shear_modulus_N_m;
 }
 
 TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {

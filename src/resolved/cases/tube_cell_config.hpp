@@ -59,6 +59,9 @@ struct TubeCellConfig {
 /// diameter; Jeffery 1922), i.e. 19.3 / gamma_dot, at the undisturbed shear rate at the cell's r*; infinite on the axis.
 double jeffery_period_s(const TubeCellConfig& c);
 
+/// RBC reference diameter D0 (seed paper section 3.2, Evans-Fung shape); Ca and the relaxation time use a = D0 / 2.
+inline constexpr double kCellDiameterD0_m = 7.82e-6;
+
 /// Kelvin-Voigt relaxation time of the membrane, zeta a^2 / k_s: its deformation friction against its shear modulus
 /// over the cell radius a = D0 / 2 = 3.91 um (0.17 s with the defaults; ~0.1-0.3 s measured for RBC shape recovery,
 /// Hochmuth et al. 1979). The cell's shape needs a few of these to respond to the flow; 0 without friction.

@@ -16,8 +16,6 @@ namespace {
 
 /// Share of the series discarded as start-up transient before settling is judged.
 constexpr double kTransientFraction = 0.25;
-/// RBC reference diameter D0 (seed paper section 3.2, Evans-Fung shape); Ca uses a = D0 / 2 (docs/coefficients.md).
-constexpr double kCellDiameterD0_m = 7.82e-6;
 
 enum Column { kDi, kCd, kCl, kInclination, kPhase };
 
