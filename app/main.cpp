@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "build_info.hpp"
 #include "common/errors.hpp"
+#include "common/stop_request.hpp"
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
   } catch (const hs::common::NumericalError& e) {
     if (rank == 0) std::fprintf(stderr, "numerical failure: %s\n", e.what());
     code = hs::common::exit_code_numerical_error;
+  } catch (const hs::common::RunInterrupted& e) {
+    if (rank == 0) std::fprintf(stderr, "interrupted: %s\n", e.what());
+    code = e.exit_code();
   } catch (const std::exception& e) {
     if (rank == 0) std::fprintf(stderr, "internal error: %s\n", e.what());
     code = 1;

@@ -7,11 +7,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -20,6 +22,7 @@
 #include "common/errors.hpp"
 #include "common/io/checkpoint.hpp"
 #include "common/progress.hpp"
+#include "common/stop_request.hpp"
 
 namespace hs::campaign {
 namespace {
@@ -27,6 +30,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 /// Exit code of a run that reached its cap (max time) without meeting its settling rule.
 constexpr int kStoppedAtCap = 1;
+
+/// A run that stopped on SIGINT / SIGTERM after writing its checkpoint exits with 128 + the signal.
+bool stopped_on_request(int code) { return code == 128 + SIGINT || code == 128 + SIGTERM; }
 
 /// Starts `hemoscale run` for one record; its console goes to console.txt. The child dies with the campaign
 /// (PR_SET_PDEATHSIG), so an interrupted campaign leaves no orphan behind; the run resumes next time.
@@ -38,6 +44,7 @@ pid_t spawn_run(const CampaignOptions& options, const RunRecord& r, int threads)
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid > 0) return pid;
   prctl(PR_SET_PDEATHSIG, SIGTERM);
+  setpgid(0, 0);   // Ctrl-C reaches the campaign only, which asks each run once to stop (a second signal kills)
   const int fd = ::open(r.console_file().c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
   if (fd >= 0) {
     dup2(fd, STDOUT_FILENO);
@@ -116,8 +123,10 @@ int CampaignRunner::run() {
   int started = 0;
   std::size_t next = 0;
   common::Progress progress(fmt::format("campaign {}", spec_.name), static_cast<long>(queue.size()), options_.show_progress);
+  const common::StopRequestScope stop_requests;
+  bool stop_forwarded = false;
   while (next < queue.size() || !running.empty()) {
-    while (next < queue.size() && static_cast<int>(running.size()) < spec_.jobs &&
+    while (common::stop_signal() == 0 && next < queue.size() && static_cast<int>(running.size()) < spec_.jobs &&
            (options_.max_runs < 0 || started < options_.max_runs)) {
       const std::size_t i = queue[next++];
       if (runs[i].state == RunState::pending) set_aside_output(runs[i]);
@@ -129,7 +138,15 @@ int CampaignRunner::run() {
     }
     if (running.empty()) break;
     int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
+    const pid_t pid = waitpid(-1, &status, WNOHANG);   // polled, so a stop request is never missed
+    if (common::stop_signal() != 0 && !stop_forwarded) {
+      for (const auto& entry : running) kill(entry.first, SIGTERM);   // each run checkpoints and exits
+      stop_forwarded = true;
+    }
+    if (pid == 0 || (pid < 0 && errno == EINTR)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      continue;
+    }
     if (pid < 0) break;
     const auto it = running.find(pid);
     if (it == running.end()) continue;
@@ -142,6 +159,8 @@ int CampaignRunner::run() {
     } else if (WIFEXITED(status) && WEXITSTATUS(status) == kStoppedAtCap && std::filesystem::exists(r.summary_file())) {
       r.state = RunState::done;   // the case file's documented cap: the summary says "settled": false
       r.reason = "stopped at its cap before settling";
+    } else if (WIFEXITED(status) && stopped_on_request(WEXITSTATUS(status))) {
+      r.state = RunState::resumable;   // it saved its checkpoint on the way out
     } else if (WIFEXITED(status)) {
       r.state = RunState::failed;
       r.reason = failure_reason(r, WEXITSTATUS(status));
@@ -157,6 +176,10 @@ int CampaignRunner::run() {
   }
   progress.finish();
   write_dataset(spec_, runs);
+  if (const int signal = common::stop_signal()) {
+    throw common::RunInterrupted(fmt::format("campaign {} stopped by signal {}; its runs saved checkpoints, run the same "
+                                             "command again to continue", spec_.name, signal), signal);
+  }
   int failed = 0;
   for (const auto& r : runs) failed += r.state == RunState::failed ? 1 : 0;
   

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "support/run_command.hpp"
+#include "support/background_run.hpp"
+#include "resolved/cases/case_text_helpers.hpp"
 
 #include <sys/wait.h>
 
@@ -132,4 +134,27 @@ TEST(Campaign, BadCampaignFileIsAConfigError) {
   const auto dir = make_campaign("bad", "[0.1]");
   std::ofstream(dir / "campaign.toml", std::ios::app) << "[dataset.columns.x]\npointer = \"/x\"\nonly_axis = \"nope\"\n";
   EXPECT_THROW(hs::campaign::read_campaign_spec(dir), hs::common::ConfigError);
+}
+
+TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
+  // SIGTERM to the campaign (Ctrl-C, `kill`, a batch system's time limit): it asks each running run to stop, each
+  // writes its checkpoint, and the campaign exits with 128 + 15 leaving the runs resumable, not failed.
+  const auto dir = fs::temp_directory_path() / "hs_campaign_stop";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.toml") << hs::test::replaced(hs::test::shipped_case_text("tube-drag"),
+                                                        "max_jeffery_periods = 6 ", "max_time_s = 0.05 ");
+  std::ofstream(dir / "campaign.toml") << "[campaign]\nname = \"stop\"\ntemplate = \"case.toml\"\njobs = 1\n"
+                                       << "[grid.re]\nkey = \"flow.reynolds\"\nvalues = [0.5]\n"
+                                       << "[dataset]\nfile = \"dataset.csv\"\nrow_axes = \"re\"\n"
+                                       << "[dataset.columns.cd_mean]\npointer = \"/results/cd_mean\"\n";
+  const auto series = dir / "runs" / "re-0.5" / "output" / "timeseries.csv";
+  const pid_t pid = hs::test::start_hemoscale({"campaign", dir.string()}, dir / "console.txt");
+  const bool sampling = hs::test::wait_until([&] { return hs::test::line_count(series) >= 3; }, std::chrono::seconds(120));
+  kill(pid, SIGTERM);
+  ASSERT_TRUE(sampling) << hs::test::file_text(dir / "console.txt");
+  EXPECT_EQ(hs::test::wait_for_exit(pid), 128 + SIGTERM) << hs::test::file_text(dir / "console.txt");
+  EXPECT_TRUE(fs::exists(series.parent_path() / "checkpoint"));
+  const auto status = run("campaign " + dir.string() + " --status");
+  EXPECT_NE(status.output.find("1 resumable"), std::string::npos) << status.output;
 }

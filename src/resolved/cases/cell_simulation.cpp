@@ -12,6 +12,7 @@
 
 #include "common/errors.hpp"
 #include "common/io/vtk_image.hpp"
+#include "common/stop_request.hpp"
 #include "common/parallel/gather.hpp"
 
 namespace hs::resolved {
@@ -171,6 +172,7 @@ bool run_sampled(common::TimeLoop& loop, CellSimulation& s, const common::RunCon
                  double checkpoint_every_wall_s, common::Progress& progress, const SampledRunHooks& hooks,
                  const int& frame) {
   common::CheckpointSchedule schedule(checkpoint_every_wall_s);
+  const common::StopRequestScope stop_requests;
   bool done = hooks.done && hooks.done();
   while (!done && loop.step() < loop.end_step()) {
     loop.run_steps(sample_every_steps);
@@ -178,6 +180,12 @@ bool run_sampled(common::TimeLoop& loop, CellSimulation& s, const common::RunCon
     hooks.sample();
     done = hooks.done && hooks.done();
     progress.update(loop.step());
+    if (const int signal = common::stop_signal_on_any_rank()) {
+      progress.finish();
+      write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
+      throw common::RunInterrupted(fmt::format("stopped by signal {} at step {} of {}; checkpoint written, continue "
+                                               "with --resume", signal, loop.step(), loop.end_step()), signal);
+    }
     if (checkpoint_due(schedule, ctx.rank())) write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
   }
   progress.finish();

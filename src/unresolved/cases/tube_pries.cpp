@@ -15,6 +15,7 @@
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
 #include "common/io/checkpoint.hpp"
+#include "common/stop_request.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
@@ -264,12 +265,19 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   }
   const long steps = std::max(1L, std::lround(c.end_time_s / c.dt_s));
   hs::common::CheckpointSchedule schedule(c.checkpoint_every_wall_s);
+  const hs::common::StopRequestScope stop_requests;
   while (coupling.steps() < steps) {
     coupling.step();
     const double q_rbc = rbc_flow_rate(dem, c.length_m);
     const double q_blood = fluid.flow_rate_m3_s(2) + q_rbc;
     st.series.push_back({fluid.time_s(), q_blood, q_rbc, q_rbc / q_blood, static_cast<double>(fluid.last_stats().pressure_iterations)});
     observe(st.series.back());
+    if (const int signal = hs::common::stop_signal()) {
+      if (!restart.dir.empty()) write_tube_checkpoint(coupling, st, restart);
+      throw hs::common::RunInterrupted(fmt::format("stopped by signal {} at step {} of {}{}", signal, coupling.steps(), steps,
+                                                   restart.dir.empty() ? "" : "; checkpoint written, continue with --resume"),
+                                       signal);
+    }
     if (!restart.dir.empty() && schedule.due()) write_tube_checkpoint(coupling, st, restart);
   }
   if (!restart.dir.empty()) write_tube_checkpoint(coupling, st, restart);

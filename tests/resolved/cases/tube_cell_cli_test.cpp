@@ -14,10 +14,12 @@
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "common/io/csv_writer.hpp"
 #include "resolved/cases/cli_case_helpers.hpp"
+#include "support/background_run.hpp"
 
 namespace fs = std::filesystem;
 
@@ -91,6 +93,33 @@ TEST(TubeCellCli, StoppedAndResumedRunGivesTheUninterruptedTimeSeries) {
     ASSERT_EQ(x.size(), y.size()) << col;
     for (std::size_t k = 0; k < x.size(); ++k) EXPECT_EQ(y[k], x[k]) << col << " row " << k;
   }
+}
+
+TEST(TubeCellCli, InterruptedRunSavesItsStepAndResumesFromIt) {
+  // SIGTERM (what `kill` and a batch system send) once the run has written two samples: the run must write a
+  // checkpoint of the step it reached, exit with 128 + 15 like a shell, and --resume must start from that step.
+  const auto dir = write_variant("interrupt", "max_jeffery_periods = 6 ", "max_time_s = 0.05 ");
+  const auto out = dir / "out";
+  const auto log = dir / "console.txt";
+  const pid_t pid = hs::test::start_hemoscale({"run", "--quiet", dir.string(), "--output", out.string()}, log);
+  const bool sampling = hs::test::wait_until([&] { return hs::test::line_count(out / "timeseries.csv") >= 3; },
+                                             std::chrono::seconds(120));
+  kill(pid, SIGTERM);
+  ASSERT_TRUE(sampling) << hs::test::file_text(log);
+  ASSERT_EQ(hs::test::wait_for_exit(pid), 128 + SIGTERM) << hs::test::file_text(log);
+  const std::string said = hs::test::file_text(log);
+  const auto at = said.find("at step ");
+  ASSERT_NE(at, std::string::npos) << said;
+  const long step = std::stol(said.substr(at + 8));
+  EXPECT_GT(step, 0);
+  EXPECT_NE(said.find("continue with --resume"), std::string::npos) << said;
+  // Resume with a cap two samples later (0.2 ms each; dt = 4 us at dx = 1 um): it must pick up at that step.
+  const double cap_s = 4e-6 * static_cast<double>(step) + 4e-4;
+  const auto rest = write_variant("interrupt_rest", "max_jeffery_periods = 6 ", fmt::format("max_time_s = {:.6f} ", cap_s));
+  const Result resumed = run("run --quiet " + rest.string() + " --output " + out.string() + " --resume");
+  EXPECT_EQ(resumed.code, 1) << resumed.output;   // capped, not settled
+  const std::string run_log = hs::test::file_text(out / "log.txt");
+  EXPECT_NE(run_log.find(fmt::format("resumed at step {} ", step)), std::string::npos) << run_log;
 }
 
 TEST(TubeCellCli, TwoRanksGiveTheSameTimeSeriesAsOne) {
