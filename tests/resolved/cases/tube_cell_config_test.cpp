@@ -33,8 +33,8 @@ TEST(TubeCellConfig, Re05KeepsTheLatticeVelocityAndScalesTheMembraneMass) {
   EXPECT_NEAR(c.dt_s, 4.0e-6, 1e-18);
   EXPECT_NEAR(c.collision.tau, 12.5, 1e-12);
   EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 4.0 * 2.0, 1e-12);   // 1.25 nu_lu k with nu_lu = 4, k = 2
-  // Spin-up: max(R^2 / nu = 625 us = 156 steps, 10 tau = 125 steps).
-  EXPECT_EQ(c.spin_up_steps, 156);
+  // Spin-up: max(4 R^2 / nu = 2.5 ms = 625 steps, 10 tau = 125 steps).
+  EXPECT_EQ(c.spin_up_steps, 625);
   // Cap: 3 membrane relaxation times zeta a^2 / k_s (2.82e4 Pa s/m x (3.91 um)^2 / 2.5e-6 N/m = 0.172 s), then 6 Jeffery
   // periods 2 pi (0.37 + 1/0.37) / gamma at r* = 0.5, gamma = 2 U_max r* / R = 400 1/s.
   EXPECT_NEAR(membrane_relaxation_time_s(c), 2.82e4 * 3.91e-6 * 3.91e-6 / 2.5e-6, 1e-12);
@@ -49,7 +49,7 @@ TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
   EXPECT_NEAR(c.dt_s, 1.0e-5, 1e-17);
   EXPECT_NEAR(c.lattice_velocity, 0.02, 1e-12);
   EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 10.0 * 2.0, 1e-9);
-  EXPECT_EQ(c.spin_up_steps, 305);   // 10 tau > R^2 / nu = 63 steps
+  EXPECT_EQ(c.spin_up_steps, 305);   // 10 tau > 4 R^2 / nu = 250 steps
 }
 
 TEST(TubeCellSeries, CdUsesTheRelativeSpeedAndClTheUndisturbedSpeed) {
