@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 namespace hs::resolved {
 namespace {
 
@@ -21,6 +23,9 @@ constexpr double kMassFactorPerViscosityStep = 1.25;
 /// Largest relaxation time: one RBC at r* = 0.2 in the campaign tube ran stably at tau = 30.5 (Re 0.2) and diverged
 /// near the cell after ~540 steps at tau = 60.5 (Re 0.1, lattice velocity 0.04), measured; docs/resolved-coupling.md.
 constexpr double kMaxTauDefault = 30.5;
+
+/// Half the thickness of the Evans-Fung biconcave disc at its thickest (2.6 um; resolved-methods.md 8.6).
+constexpr double kCellHalfThickness_m = 1.3e-6;
 
 }  // namespace
 
@@ -67,6 +72,17 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
   numerics.derived("tau", n.collision.tau);
   numerics.derived("lattice_velocity", n.lattice_velocity);          // lowered if tau hit max_tau
   numerics.derived("membrane_mass_factor", n.membrane_mass_factor);  // 0 in the input means 1.25 nu_lu k
+}
+
+std::string kernel_width_warning(DeltaKernel kernel, double dx_m) {
+  const double reach_m = 0.5 * support_points(kernel) * dx_m;
+  if (reach_m <= kCellHalfThickness_m) return {};
+  return fmt::format("the {}-point IBM kernel reaches {:.2g} um from each vertex at dx = {:g} m, more than the cell's "
+                     "half-thickness ({:.2g} um): past its membrane transient the cell can fold (docs/resolved-coupling.md, "
+                     "\"The IBM kernel's width\"); [numerics] ibm_kernel_points = {} reaches {:.2g} um",
+                     support_points(kernel), 1e6 * reach_m, dx_m, 1e6 * kCellHalfThickness_m,
+                     std::max(2, static_cast<int>(2.0 * kCellHalfThickness_m / dx_m)),
+                     0.5e6 * std::max(2, static_cast<int>(2.0 * kCellHalfThickness_m / dx_m)) * dx_m);
 }
 
 }  // namespace hs::resolved

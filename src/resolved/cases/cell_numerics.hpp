@@ -3,6 +3,8 @@
 // the tau cap, the membrane step and mass scaling, the IBM settings.
 #pragma once
 
+#include <string>
+
 #include "common/config/config_file.hpp"
 #include "resolved/ibm/coupled_cell.hpp"
 #include "resolved/lbm/boundary_links.hpp"
@@ -34,5 +36,10 @@ struct CellNumerics {
 /// time_step_s and tau as derived keys of `numerics`.
 void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, double reference_velocity_m_s,
                           hs::common::ConfigSection numerics);
+
+/// A warning for the run's log when the IBM kernel reaches further from a vertex than the RBC's half-thickness: both
+/// faces of the disc then force the same fluid, and past its membrane transient the cell folds into a compact shape
+/// (docs/resolved-coupling.md, "The IBM kernel's width"). Empty when the kernel is narrow enough.
+[[nodiscard]] std::string kernel_width_warning(DeltaKernel kernel, double dx_m);
 
 }  // namespace hs::resolved

@@ -110,6 +110,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                  "tau = {:.3f}, lattice velocity {:.4g}, membrane mass factor {:.3g}", type, c.reynolds,
                  c.shear_rate_1_s, c.u_max_m_s, r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m, c.numerics.dt_s,
                  c.numerics.collision.tau, c.numerics.lattice_velocity, c.numerics.membrane_mass_factor);
+  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
   PlateCellSeries series(c);
   int frame = 0;
   long first_step = 0;

@@ -174,6 +174,7 @@ int run_stenosis(const common::CaseRequest& request) {
                  c.height_m, c.throat_height_m, c.flow_rate_m2_s(), plasma.drive_m_s2,
                  c.flow_rate_m2_s() / plasma.mean_flow_rate_m2_s, r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m,
                  c.numerics.dt_s, c.numerics.collision.tau, c.numerics.membrane_mass_factor);
+  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
   StenosisSeries series(c);
   int frame = 0;
   long first_step = 0;

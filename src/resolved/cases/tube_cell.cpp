@@ -120,6 +120,7 @@ int run_tube_cell(const common::CaseRequest& request) {
                  c.setup == TubeCellSetup::drag ? "drag" : "lift", c.radial_position, c.reynolds, c.u_max_m_s,
                  r.nodes[0], r.nodes[1], r.nodes[2], c.dx_m, c.dt_s, c.collision.tau, c.lattice_velocity,
                  c.membrane_every);
+  if (const std::string w = kernel_width_warning(numerics_of(c).ibm.kernel, c.dx_m); !w.empty()) ctx.log().warning("{}", w);
   TubeCellSeries series(c, r.membrane->rest_volume_m3());
   int frame = 0;
   long first_step = 0;
