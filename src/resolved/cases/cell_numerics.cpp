@@ -79,10 +79,8 @@ std::string kernel_width_warning(DeltaKernel kernel, double dx_m) {
   if (reach_m <= kCellHalfThickness_m) return {};
   return fmt::format("the {}-point IBM kernel reaches {:.2g} um from each vertex at dx = {:g} m, more than the cell's "
                      "half-thickness ({:.2g} um): past its membrane transient the cell can fold (docs/resolved-coupling.md, "
-                     "\"The IBM kernel's width\"); [numerics] ibm_kernel_points = {} reaches {:.2g} um",
-                     support_points(kernel), 1e6 * reach_m, dx_m, 1e6 * kCellHalfThickness_m,
-                     std::max(2, static_cast<int>(2.0 * kCellHalfThickness_m / dx_m)),
-                     0.5e6 * std::max(2, static_cast<int>(2.0 * kCellHalfThickness_m / dx_m)) * dx_m);
+                     "\"The IBM kernel's width\"); the campaign's tube cases use ibm_kernel_points = 2 at dx = 1 um",
+                     support_points(kernel), 1e6 * reach_m, dx_m, 1e6 * kCellHalfThickness_m);
 }
 
 }  // namespace hs::resolved
