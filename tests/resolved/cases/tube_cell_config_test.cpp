@@ -45,12 +45,13 @@ TEST(TubeCellConfig, Re05KeepsTheLatticeVelocityAndScalesTheMembraneMass) {
 
 TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
   const TubeCellConfig c = read_drag_case(0.1);
-  // At 0.04 tau would be 60.5 > max_tau = 30.5: dt = 30 dx^2 / (3 nu) = 10 us, lattice velocity 0.002 m/s x dt/dx.
-  EXPECT_NEAR(c.collision.tau, 30.5, 1e-12);
-  EXPECT_NEAR(c.dt_s, 1.0e-5, 1e-17);
-  EXPECT_NEAR(c.lattice_velocity, 0.02, 1e-12);
-  EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 10.0 * 2.0, 1e-9);
-  EXPECT_EQ(c.spin_up_steps, 305);   // 10 tau > 4 R^2 / nu = 250 steps
+  // At 0.04 tau would be 60.5 > the case's max_tau = 15.5: dt = 15 dx^2 / (3 nu) = 5 us, lattice velocity
+  // 0.002 m/s x dt / dx = 0.01.
+  EXPECT_NEAR(c.collision.tau, 15.5, 1e-12);
+  EXPECT_NEAR(c.dt_s, 5.0e-6, 1e-18);
+  EXPECT_NEAR(c.lattice_velocity, 0.01, 1e-12);
+  EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 5.0 * 2.0, 1e-9);
+  EXPECT_EQ(c.spin_up_steps, 500);   // 4 R^2 / nu = 500 steps > 10 tau = 155
 }
 
 TEST(TubeCellSeries, CdUsesTheRelativeSpeedAndClTheUndisturbedSpeed) {
