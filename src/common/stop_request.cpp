@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "common/stop_request.hpp"
 
-#include <mpi.h>
-
 namespace hs::common {
 namespace {
 
@@ -35,12 +33,5 @@ StopRequestScope::~StopRequestScope() {
 }
 
 int stop_signal() { return g_stop_signal; }
-
-int stop_signal_on_any_rank() {
-  int local = g_stop_signal;
-  int any = 0;
-  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  return any;
-}
 
 }  // namespace hs::common

@@ -26,9 +26,6 @@ class StopRequestScope {
 /// The signal that asked this process to stop (SIGINT or SIGTERM), 0 while none did.
 int stop_signal();
 
-/// The stop signal of any rank, 0 if none (collective: every rank calls it at the same point).
-int stop_signal_on_any_rank();
-
 /// Thrown after the run has saved its checkpoint; the CLI exits with 128 + the signal, as a shell would.
 class RunInterrupted : public std::runtime_error {
  public:

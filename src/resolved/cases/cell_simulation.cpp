@@ -28,11 +28,17 @@ std::vector<double> flatten(const std::vector<Vec3>& a, const std::vector<Vec3>&
   return out;
 }
 
-/// Rank 0's clock decides, so every rank writes the checkpoint of the same step.
-bool checkpoint_due(common::CheckpointSchedule& schedule, int rank) {
-  int due = rank == 0 && schedule.due() ? 1 : 0;
-  MPI_Bcast(&due, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  return due != 0;
+/// What the ranks do after a sample, agreed in one reduction: a periodic checkpoint when rank 0's clock says so (so
+/// every rank writes the same step), and a stop when any rank was asked to (its signal, 0 if none).
+struct AfterSample {
+  bool checkpoint;
+  int stop_signal;
+};
+
+AfterSample agree_after_sample(common::CheckpointSchedule& schedule, int rank) {
+  int v[2] = {rank == 0 && schedule.due() ? 1 : 0, common::stop_signal()};
+  MPI_Allreduce(MPI_IN_PLACE, v, 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return {v[0] != 0, v[1]};
 }
 
 }  // namespace
@@ -180,13 +186,15 @@ bool run_sampled(common::TimeLoop& loop, CellSimulation& s, const common::RunCon
     hooks.sample();
     done = hooks.done && hooks.done();
     progress.update(loop.step());
-    if (const int signal = common::stop_signal_on_any_rank()) {
+    const AfterSample next = agree_after_sample(schedule, ctx.rank());
+    if (next.stop_signal != 0) {
       progress.finish();
       write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
       throw common::RunInterrupted(fmt::format("stopped by signal {} at step {} of {}; checkpoint written, continue "
-                                               "with --resume", signal, loop.step(), loop.end_step()), signal);
+                                               "with --resume", next.stop_signal, loop.step(), loop.end_step()),
+                                   next.stop_signal);
     }
-    if (checkpoint_due(schedule, ctx.rank())) write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
+    if (next.checkpoint) write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
   }
   progress.finish();
   write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
