@@ -29,16 +29,22 @@ constexpr std::size_t slot_of(int i) {
 
 /// Updates nodes [begin, end): f_i = slot[slot_of<kStep, true>(i)][n], collide, store f*_i to
 /// slot[slot_of<kStep, false>(i)][n]. The SIMD pragma is valid because node n's slots are disjoint from every other
-/// node's (see the header), and each store depends on all 19 loads of its own node.
-template <AaStep kStep, bool kForceField>
-void aa_update_nodes(const AaStreamCollideArgs& a, const Slots& slot, std::ptrdiff_t begin, std::ptrdiff_t end) {
+/// node's (see the header), and each store depends on all 19 loads of its own node. kOddParts: also keep the node's
+/// pre-collision odd parts at entry odd_base + n (see AaStreamCollideArgs::odd_parts).
+template <AaStep kStep, bool kForceField, bool kOddParts>
+void aa_update_nodes(const AaStreamCollideArgs& a, const Slots& slot, std::ptrdiff_t begin, std::ptrdiff_t end,
+                     std::ptrdiff_t odd_base) {
   const TrtRates rates = trt_rates(a.omega_plus, a.omega_minus);
   const std::ptrdiff_t vol = static_cast<std::ptrdiff_t>(a.force_stride);
-#pragma omp simd
-  for (std::ptrdiff_t n = begin; n < end; ++n) {
+  const auto odd_stride = static_cast<std::ptrdiff_t>(a.odd_stride);
+  const auto update = [&](std::ptrdiff_t n) __attribute__((always_inline)) {
     double f[C::q];
 #pragma GCC unroll 19
     for (int i = 0; i < C::q; ++i) f[i] = slot[slot_of<kStep, true>(i)][n];
+    if constexpr (kOddParts) {
+#pragma GCC unroll 9
+      for (int k = 1; k <= C::half; ++k) a.odd_parts[(k - 1) * odd_stride + odd_base + n] = 0.5 * (f[k] - f[k + C::half]);
+    }
     double fx = a.body_force.x;
     double fy = a.body_force.y;
     double fz = a.body_force.z;
@@ -51,6 +57,13 @@ void aa_update_nodes(const AaStreamCollideArgs& a, const Slots& slot, std::ptrdi
     trt_guo_collide(f, fx, fy, fz, rates, post);
 #pragma GCC unroll 19
     for (int i = 0; i < C::q; ++i) slot[slot_of<kStep, false>(i)][n] = post[i];
+  };
+  if constexpr (kOddParts) {
+    // The nodes along walls come in runs of one to three: a plain loop, without the SIMD set-up.
+    for (std::ptrdiff_t n = begin; n < end; ++n) update(n);
+  } else {
+#pragma omp simd
+    for (std::ptrdiff_t n = begin; n < end; ++n) update(n);
   }
 }
 
@@ -67,29 +80,30 @@ Slots edge_slots(const Slots& slot, std::ptrdiff_t nx, bool low, bool high) {
   return t;
 }
 
-template <AaStep kStep, bool kForceField>
+template <AaStep kStep, bool kForceField, bool kOddParts>
 void aa_update_run(const AaStreamCollideArgs& a, const Slots& slot, const std::array<Slots, 3>& edges, FluidRun run) {
   std::ptrdiff_t begin = run.begin;
   std::ptrdiff_t end = run.begin + run.length;
+  const std::ptrdiff_t odd_base = run.odd_parts - run.begin;
   if (kStep == AaStep::neighbour && a.wrap_x > 0) {
     const std::ptrdiff_t ghost = (a.stride_y - a.wrap_x) / 2;
     const std::ptrdiff_t x0 = begin % a.stride_y - ghost;
     const bool low = x0 == 0;
     const bool high = x0 + run.length == a.wrap_x;
     if (low && high && run.length == 1) {
-      aa_update_nodes<kStep, kForceField>(a, edges[2], begin, begin + 1);
+      aa_update_nodes<kStep, kForceField, kOddParts>(a, edges[2], begin, begin + 1, odd_base);
       return;
     }
     if (low) {
-      aa_update_nodes<kStep, kForceField>(a, edges[0], begin, begin + 1);
+      aa_update_nodes<kStep, kForceField, kOddParts>(a, edges[0], begin, begin + 1, odd_base);
       ++begin;
     }
     if (high) {
-      aa_update_nodes<kStep, kForceField>(a, edges[1], end - 1, end);
+      aa_update_nodes<kStep, kForceField, kOddParts>(a, edges[1], end - 1, end, odd_base);
       --end;
     }
   }
-  aa_update_nodes<kStep, kForceField>(a, slot, begin, end);
+  aa_update_nodes<kStep, kForceField, kOddParts>(a, slot, begin, end, odd_base);
 }
 
 struct LayerRange {
@@ -125,10 +139,18 @@ void aa_update_runs(const AaStreamCollideArgs& a) {
                                    edge_slots(slot, nx, true, true)};
   const bool has_field = a.force_field != nullptr;
   const auto update = [&](std::size_t r) {
+    const FluidRun& run = a.runs[r];
+    const bool odd_parts = run.odd_parts >= 0 && a.odd_parts != nullptr;
     if (has_field) {
-      aa_update_run<kStep, true>(a, slot, edges, a.runs[r]);
+      if (odd_parts) {
+        aa_update_run<kStep, true, true>(a, slot, edges, run);
+      } else {
+        aa_update_run<kStep, true, false>(a, slot, edges, run);
+      }
+    } else if (odd_parts) {
+      aa_update_run<kStep, false, true>(a, slot, edges, run);
     } else {
-      aa_update_run<kStep, false>(a, slot, edges, a.runs[r]);
+      aa_update_run<kStep, false, false>(a, slot, edges, run);
     }
   };
   if (a.layer_runs == nullptr || a.layer_runs->empty()) {
@@ -151,16 +173,18 @@ void aa_update_runs(const AaStreamCollideArgs& a) {
   {
     const LayerRange mine = thread_layers(nodes_before);
     for (int z = mine.begin; z < mine.end; ++z) {
-      if (a.before_layer != nullptr) (*a.before_layer)(z);
       for (std::size_t r = layers[static_cast<std::size_t>(z)]; r < layers[static_cast<std::size_t>(z) + 1]; ++r) update(r);
-      // Layer z - 1 is complete once z - 2 (this thread's, or none) and z are: only the first layer of the range
-      // waits for another thread.
-      if (a.after_layer != nullptr && z - 1 > mine.begin) (*a.after_layer)(z - 1);
+      // Right after the update, while the layers are in cache; only (first, below) and (last, above) wait for
+      // the layer of another thread.
+      if (a.after_layers != nullptr && z > mine.begin) {
+        (*a.after_layers)(z, LayerPair::with_below);
+        (*a.after_layers)(z - 1, LayerPair::with_above);
+      }
     }
 #pragma omp barrier
-    if (a.after_layer != nullptr && mine.end > mine.begin) {
-      (*a.after_layer)(mine.begin);
-      if (mine.end - 1 > mine.begin) (*a.after_layer)(mine.end - 1);
+    if (a.after_layers != nullptr && mine.end > mine.begin) {
+      (*a.after_layers)(mine.begin, LayerPair::with_below);
+      (*a.after_layers)(mine.end - 1, LayerPair::with_above);
     }
   }
 }

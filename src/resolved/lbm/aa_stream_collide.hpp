@@ -26,6 +26,10 @@ namespace hs::resolved {
 /// lines were just read). The neighbour step reads and writes the ghost layer; the local step touches only x.
 enum class AaStep { local, neighbour };
 
+/// The two calls of AaStreamCollideArgs::after_layers for layer z: once z - 1 and z are updated (with_below), and
+/// once z and z + 1 are (with_above).
+enum class LayerPair { with_below, with_above };
+
 struct AaStreamCollideArgs {
   double* f;                                     // the single population buffer (SoA, stride volume)
   std::size_t volume;                            // component stride of f
@@ -42,11 +46,16 @@ struct AaStreamCollideArgs {
   std::ptrdiff_t wrap_x = 0;
   std::ptrdiff_t stride_y = 0;                   // linear offset of one node along y (with wrap_x > 0)
   /// Optional layering along z: the runs of local layer z are runs[layer_runs[z] .. layer_runs[z + 1]) (size n_z + 1;
-  /// empty: no layering). The threads then take contiguous ranges of layers (balanced by nodes) and call the hooks,
-  /// concurrently for different layers, so sparse passes can work on layers while they are still in cache:
+  /// empty: no layering). The threads then take contiguous ranges of layers (balanced by nodes) and call the hook,
+  /// concurrently for different layers, so sparse passes can work on layers while they are still in cache: once
+  /// per layer z and LayerPair (see there).
   const std::vector<std::size_t>* layer_runs = nullptr;
-  const std::function<void(int)>* before_layer = nullptr;   // right before the nodes of layer z are updated
-  const std::function<void(int)>* after_layer = nullptr;    // once layers z - 1, z, z + 1 are updated; each z once
+  const std::function<void(int, LayerPair)>* after_layers = nullptr;
+  /// Where runs with FluidRun::odd_parts >= 0 leave the pre-collision odd parts (f_k - f_{k+9})/2, k = 1..9, of their
+  /// nodes: entry e of pair k at odd_parts[(k - 1) * odd_stride + e]. The wall links need them after the step
+  /// (apply_wall_links_aa); the kernel has them in registers, where a separate pass would reread them from memory.
+  double* odd_parts = nullptr;
+  std::size_t odd_stride = 0;
 };
 
 /// One AA step on every node of `runs`, with the same collision (trt_guo_collide) as stream_collide().

@@ -67,8 +67,8 @@ void capture_link_odd_parts(std::span<const WallLink> links, const double* f, co
     const WallLink& l = links[static_cast<std::size_t>(k)];
     if (l.e == 0.0) continue;
     // f_i(x) = f*_i(x - c_i), f_-i(x) = f*_-i(x + c_i): the slots apply_wall_links reads from `previous`.
-    odd_parts[static_cast<std::size_t>(k)] =
-        0.5 * (f[layout.slot(l.dir, l.behind)] - f[layout.slot(D3Q19::opposite(l.dir), l.target)]);
+    const double odd = 0.5 * (f[layout.slot(l.dir, l.behind)] - f[layout.slot(D3Q19::opposite(l.dir), l.target)]);
+    odd_parts[static_cast<std::size_t>(l.odd_slot)] = l.dir <= D3Q19::half ? odd : -odd;
   }
 }
 
@@ -82,7 +82,11 @@ void apply_wall_links_aa(std::span<const WallLink> links, double* f, const AaLay
     const int o = D3Q19::opposite(l.dir);
     const double post_i = f[layout.slot(l.dir, l.node)];
     const double post_o = f[layout.slot(o, l.node)];
-    const double odd_pre = l.e == 0.0 ? 0.0 : odd_parts[static_cast<std::size_t>(k)];
+    double odd_pre = 0.0;
+    if (l.e != 0.0) {
+      const double pair = odd_parts[static_cast<std::size_t>(l.odd_slot)];
+      odd_pre = l.dir <= D3Q19::half ? pair : -pair;
+    }
     const double odd_change = odd_pre - 0.5 * (post_i - post_o);
     f[layout.slot(o, l.target)] =
         l.a * post_i + l.b * f[layout.slot(l.dir, l.second)] + l.c * post_o + l.d + l.e * odd_change;

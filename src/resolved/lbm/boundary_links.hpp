@@ -41,6 +41,9 @@ struct WallLink {
   std::ptrdiff_t behind;   // linear index of x - c_i, where the pre-collision f_i(x) comes from
   int dir;                 // i, pointing from the fluid into the wall
   double a, b, c, d, e;
+  /// AA, e != 0: where the pre-collision odd part of x's pair (k, k + 9) holding i is kept (see
+  /// AaStreamCollideArgs::odd_parts); the link's own (f_i - f_-i)/2 is that value, negated when i > 9.
+  std::ptrdiff_t odd_slot = -1;
 };
 
 /// What make_wall_link needs to know about one cut link.
@@ -78,13 +81,13 @@ struct AaLayout {
   [[nodiscard]] std::size_t slot(int j, std::ptrdiff_t y) const;
 };
 
-/// The pre-collision odd part (f_i(x) - f_-i(x))/2 of each link's node for the coming step, read from the complete
-/// state before it (the AA pattern overwrites it in place; apply_wall_links reads it from the previous buffer).
+/// The pre-collision odd part of each link's node and pair for the coming step (see WallLink::odd_slot), read from
+/// the complete state before it. The AA kernel keeps them itself during a step; this serves the first one.
 void capture_link_odd_parts(std::span<const WallLink> links, const double* f, const AaLayout& layout,
                             std::span<double> odd_parts);
 
 /// apply_wall_links for the single AA buffer: the same values, written to and read from the slots of `layout`.
-/// `odd_parts` come from capture_link_odd_parts before the step (only read where a link's e != 0).
+/// `odd_parts`: the pre-collision odd parts of the step just made, at the links' odd_slot (read where e != 0).
 void apply_wall_links_aa(std::span<const WallLink> links, double* f, const AaLayout& layout,
                          std::span<const double> odd_parts);
 

@@ -97,7 +97,7 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
     build_aa_layers();
     dst_ = AlignedDoubles();
     aa_halo_ = std::make_unique<AaHalo>(*decomposition_, stride_, aa_wrap_x() > 0);
-    link_odd_parts_.assign(links_.size(), 0.0);
+    link_odd_parts_.assign(D3Q19::half * odd_part_nodes_, 0.0);
     // As the two-buffer scheme, whose `previous` buffer is the initial state before the first exchange: ghosts
     // hold f^eq of init() at their unwrapped positions, so no x wrapping here.
     AaLayout raw = aa_layout();
@@ -129,8 +129,7 @@ void FluidLattice::apply_boundaries() {
     // After a step the kernel has applied the fused links already; at initialize() all links are due.
     const std::size_t first = fused_links_done_ ? fused_links_ : 0;
     fused_links_done_ = false;
-    apply_wall_links_aa(std::span<const WallLink>(links_).subspan(first), src_.data(), aa_layout(),
-                        std::span<const double>(link_odd_parts_).subspan(first));
+    apply_wall_links_aa(std::span<const WallLink>(links_).subspan(first), src_.data(), aa_layout(), link_odd_parts_);
     return;
   }
   apply_open_boundaries(open_nodes_, src_.data(), stride_);
@@ -176,30 +175,18 @@ std::ptrdiff_t FluidLattice::aa_wrap_x() const {
   return self_periodic ? layout_.n[0] : 0;
 }
 
-/// Even steps_ (swapped layout) take a neighbour step, odd ones a local step. The links away from the block faces
-/// are captured right before their layer is updated (their slots belong to their own node, which only that update
-/// overwrites) and applied once the layers around them are (their values depend on no ghost pass), while the
-/// layers are in cache; the others are captured first and applied after the ghost pass, in apply_boundaries().
+/// Even steps_ (swapped layout) take a neighbour step, odd ones a local step. The kernel keeps the pre-collision odd
+/// parts of the links' nodes as it updates them. The links away from the block faces are applied as soon as the
+/// nodes they read are updated (their values depend on no ghost pass), while those are in cache; the others after
+/// the ghost pass, in apply_boundaries().
 void FluidLattice::aa_stream_collide() {
-  const AaLayout before = aa_layout();
-  AaLayout after = before;
-  after.natural = !before.natural;
+  AaLayout after = aa_layout();
+  after.natural = !after.natural;
   const std::span<const WallLink> links(links_);
-  const std::span<double> odd(link_odd_parts_);
-  if (links_need_odd_parts_) {
-    capture_link_odd_parts(links.subspan(fused_links_), src_.data(), before, odd.subspan(fused_links_));
-  }
-  const auto layer = [&](int z) {
-    const std::size_t k0 = layer_links_[static_cast<std::size_t>(z)];
-    return std::pair{k0, layer_links_[static_cast<std::size_t>(z) + 1] - k0};
-  };
-  const std::function<void(int)> capture = [&](int z) {
-    const auto [k0, count] = layer(z);
-    capture_link_odd_parts(links.subspan(k0, count), src_.data(), before, odd.subspan(k0, count));
-  };
-  const std::function<void(int)> apply = [&](int z) {
-    const auto [k0, count] = layer(z);
-    apply_wall_links_aa(links.subspan(k0, count), src_.data(), after, odd.subspan(k0, count));
+  const std::function<void(int, LayerPair)> apply = [&](int z, LayerPair pair) {
+    const std::size_t group = 2 * static_cast<std::size_t>(z) + (pair == LayerPair::with_above ? 1 : 0);
+    const std::size_t k0 = layer_links_[group];
+    apply_wall_links_aa(links.subspan(k0, layer_links_[group + 1] - k0), src_.data(), after, link_odd_parts_);
   };
   const bool fused = fused_links_ > 0;
   resolved::aa_stream_collide(
@@ -216,8 +203,9 @@ void FluidLattice::aa_stream_collide() {
                           .wrap_x = aa_wrap_x(),
                           .stride_y = layout_.stride_y(),
                           .layer_runs = fused ? &layer_runs_ : nullptr,
-                          .before_layer = fused && links_need_odd_parts_ ? &capture : nullptr,
-                          .after_layer = fused ? &apply : nullptr},
+                          .after_layers = fused ? &apply : nullptr,
+                          .odd_parts = links_need_odd_parts_ ? link_odd_parts_.data() : nullptr,
+                          .odd_stride = odd_part_nodes_},
       steps_ % 2 == 0 ? AaStep::neighbour : AaStep::local);
   fused_links_done_ = true;
   ++steps_;

@@ -169,6 +169,7 @@ class FluidLattice {
   void build_wall_links();
   void build_open_nodes();
   void build_aa_layers();
+  void build_odd_part_runs();
   void complete_state();
   [[nodiscard]] std::array<int, 3> global_of(std::ptrdiff_t index) const;
   [[nodiscard]] std::ptrdiff_t index(int x, int y, int z) const { return layout_.index(x, y, z); }
@@ -191,9 +192,13 @@ class FluidLattice {
   std::vector<FluidRun> runs_;
   std::size_t fluid_nodes_ = 0;
   std::vector<WallLink> links_;
-  std::vector<double> link_odd_parts_;   // AA: pre-collision odd parts of the links' nodes (capture_link_odd_parts)
+  /// AA: the pre-collision odd parts of the nodes with Bouzidi links, kept by the kernel (AaStreamCollideArgs::odd_parts):
+  /// odd_part_nodes_ entries per pair.
+  std::vector<double> link_odd_parts_;
+  std::size_t odd_part_nodes_ = 0;
   /// AA: links_[0, fused_links_) are those at least two nodes from every block face, z-major; the kernel captures and
-  /// applies them layer by layer while the layer is in cache (layer z: links_[layer_links_[z], layer_links_[z + 1])).
+  /// applies them layer by layer while the layer is in cache: layer z's links_[layer_links_[2z], layer_links_[2z + 1]) once
+  /// layers z - 1 and z are updated, links_[layer_links_[2z + 1], layer_links_[2z + 2]) once z and z + 1 are.
   /// The others need the ghost passes and follow them in apply_boundaries().
   std::size_t fused_links_ = 0;
   std::vector<std::size_t> layer_links_;

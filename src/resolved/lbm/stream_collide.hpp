@@ -15,6 +15,9 @@ namespace hs::resolved {
 struct FluidRun {
   std::ptrdiff_t begin;
   std::ptrdiff_t length;
+  /// AA: >= 0 when the kernel keeps the pre-collision odd parts of these nodes for their wall links: node begin + k
+  /// is entry odd_parts + k of AaStreamCollideArgs::odd_parts. -1: none.
+  std::ptrdiff_t odd_parts = -1;
 };
 
 struct StreamCollideArgs {
