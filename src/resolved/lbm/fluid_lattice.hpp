@@ -170,6 +170,7 @@ class FluidLattice {
   void build_open_nodes();
   void build_aa_layers();
   void build_odd_part_runs();
+  [[nodiscard]] std::array<const double*, D3Q19::q> population_table() const;
   void complete_state();
   [[nodiscard]] std::array<int, 3> global_of(std::ptrdiff_t index) const;
   [[nodiscard]] std::ptrdiff_t index(int x, int y, int z) const { return layout_.index(x, y, z); }
