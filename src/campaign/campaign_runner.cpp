@@ -169,9 +169,8 @@ int CampaignRunner::run() {
       r.state = common::Checkpoint::exists(r.output_dir() / "checkpoint") ? RunState::resumable : RunState::pending;
     }
     write_run_status(r);
-
-    ++finished;
-    progress.update(finished);
+    // A run stopped on request or killed is not finished: the progress line (and its ETA) counts only those that are.
+    if (r.state == RunState::done || r.state == RunState::failed) progress.update(++finished);
     write_dataset(spec_, runs);
   }
   progress.finish();
@@ -182,7 +181,6 @@ int CampaignRunner::run() {
   }
   int failed = 0;
   for (const auto& r : runs) failed += r.state == RunState::failed ? 1 : 0;
-  
   return failed;
 }
 
