@@ -140,7 +140,9 @@ void FluidLattice::build_aa_layers() {
 /// AA: splits the runs so that the nodes with Bouzidi links (e != 0) form runs of their own, numbers those nodes in
 /// run order for the kernel to keep their odd parts (FluidRun::odd_parts), and points each such link at its pair's
 /// entry (WallLink::odd_slot). About one node in ten of the campaign tube has one; a separate pass that reread them
-/// after the step cost 12 % of a cell run's time (bench resolved, session 7).
+/// after the step cost 12 % of a cell run's time (bench resolved, session 7). These short runs at the rows' ends still
+/// take ~16 % of the time for 10 % of the nodes: they open the rows' cache lines (a variant that kept the runs whole
+/// and read the odd parts before each run paid the same there).
 void FluidLattice::build_odd_part_runs() {
   odd_part_nodes_ = 0;
   std::vector<std::ptrdiff_t> entry(layout_.volume(), -1);
