@@ -97,8 +97,9 @@ std::string CampaignRunner::status_table() const {
     out += fmt::format("{:<44} {:<10} {:>10} {:>8}  {}\n", r.name, to_string(r.state),
                        r.wall_s > 0 ? common::Progress::format_duration(r.wall_s) : "", r.attempts, r.reason);
   }
-  out += fmt::format("{} runs: {} done, {} failed, {} resumable, {} pending\n", runs.size(), count[RunState::done],
-                     count[RunState::failed], count[RunState::resumable], count[RunState::pending]);
+  out += fmt::format("{} runs: {} done, {} failed, {} running, {} resumable, {} pending\n", runs.size(),
+                     count[RunState::done], count[RunState::failed], count[RunState::running],
+                     count[RunState::resumable], count[RunState::pending]);
   return out;
 }
 
@@ -133,7 +134,11 @@ int CampaignRunner::run() {
       std::filesystem::remove(runs[i].dir / "status.json");   // a retried run is no longer "failed" in --status
       runs[i].attempts += 1;
       write_run_status(runs[i]);   // attempts.json: counts attempts across interruptions
-      running[spawn_run(options_, runs[i], spec_.threads_per_job)] = {i, Clock::now()};
+      const pid_t pid = spawn_run(options_, runs[i], spec_.threads_per_job);
+      running[pid] = {i, Clock::now()};
+      runs[i].state = RunState::running;   // attempts.json names the process, for --status
+      runs[i].pid = pid;
+      write_run_status(runs[i]);
       ++started;
     }
     if (running.empty()) break;
@@ -152,6 +157,7 @@ int CampaignRunner::run() {
     if (it == running.end()) continue;
     auto& r = runs[it->second.first];
     r.wall_s += std::chrono::duration<double>(Clock::now() - it->second.second).count();
+    r.pid = 0;
     running.erase(it);
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
       r.state = RunState::done;

@@ -2,7 +2,10 @@
 // The state of one campaign run, kept in its folder.
 #include "campaign/run_record.hpp"
 
+#include <signal.h>
+
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -11,11 +14,24 @@
 #include "common/io/checkpoint.hpp"
 
 namespace hs::campaign {
+namespace {
+
+/// Whether process `pid` is alive and runs this run's case file (not a later process that reused the number).
+bool runs_now(long pid, const RunRecord& r) {
+  if (pid <= 0 || kill(static_cast<pid_t>(pid), 0) != 0) return false;
+  std::ifstream in("/proc/" + std::to_string(pid) + "/cmdline");
+  const std::string cmdline((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The run's own folder name and file, as the path may be spelled relative to another directory.
+  return cmdline.find(r.name + "/case.toml") != std::string::npos;
+}
+
+}  // namespace
 
 std::string to_string(RunState state) {
   switch (state) {
     case RunState::pending: return "pending";
     case RunState::resumable: return "resumable";
+    case RunState::running: return "running";
     case RunState::done: return "done";
     case RunState::failed: return "failed";
   }
@@ -46,6 +62,11 @@ RunRecord read_run_record(const std::filesystem::path& dir, const std::string& n
     if (!j.is_discarded()) {
       r.attempts = j.value("attempts", 0);
       r.wall_s = j.value("wall_s", 0.0);
+      if (runs_now(j.value("pid", 0L), r)) {
+        r.state = RunState::running;
+        r.pid = j.value("pid", 0L);
+        return r;
+      }
     }
   }
   if (common::Checkpoint::exists(r.output_dir() / "checkpoint")) r.state = RunState::resumable;
@@ -53,8 +74,9 @@ RunRecord read_run_record(const std::filesystem::path& dir, const std::string& n
 }
 
 void write_run_status(const RunRecord& record) {
-  const nlohmann::json j{{"state", to_string(record.state)}, {"reason", record.reason}, {"wall_s", record.wall_s},
-                         {"attempts", record.attempts}};
+  nlohmann::json j{{"state", to_string(record.state)}, {"reason", record.reason}, {"wall_s", record.wall_s},
+                   {"attempts", record.attempts}};
+  if (record.state == RunState::running) j["pid"] = record.pid;
   const auto file = record.state == RunState::done || record.state == RunState::failed ? record.dir / "status.json"
                                                                                         : record.dir / "attempts.json";
   common::write_file_atomic(file, j.dump(2) + "\n");

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The state of one campaign run, kept in its folder so that any interruption can be resumed:
-// status.json says done or failed; a checkpoint without it says resume; nothing says start.
+// status.json says done or failed; a checkpoint without it says resume; nothing says start. While a campaign runs it,
+// attempts.json names its process.
 #pragma once
 
 #include <filesystem>
@@ -8,7 +9,8 @@
 
 namespace hs::campaign {
 
-enum class RunState { pending, resumable, done, failed };
+/// running: a campaign's process runs it now (so --status shows it, and a second campaign on the folder leaves it).
+enum class RunState { pending, resumable, running, done, failed };
 
 struct RunRecord {
   std::filesystem::path dir;   // campaign/runs/<name>
@@ -17,6 +19,7 @@ struct RunRecord {
   std::string reason;          // why it failed
   double wall_s = 0.0;         // wall time of the finished run (all attempts)
   int attempts = 0;
+  long pid = 0;                // the process running it (state running), else 0
 
   [[nodiscard]] std::filesystem::path case_file() const { return dir / "case.toml"; }
   [[nodiscard]] std::filesystem::path output_dir() const { return dir / "output"; }

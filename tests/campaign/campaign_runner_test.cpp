@@ -82,7 +82,7 @@ TEST(Campaign, ReopenedRunsGoAgainAndLeaveTheDatasetUntilTheyFinish) {
   // afresh), and the dataset lists no row until they finish again.
   const auto held = run("campaign " + dir.string() + " --reopen-done --max-runs 0");
   EXPECT_EQ(held.code, 0) << held.output;
-  EXPECT_NE(held.output.find("0 done, 0 failed, 0 resumable, 2 pending"), std::string::npos) << held.output;
+  EXPECT_NE(held.output.find("0 done, 0 failed, 0 running, 0 resumable, 2 pending"), std::string::npos) << held.output;
   EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").rows.size(), 0u);
   // The next invocation runs them: done again, rows back, the first output kept beside the new one.
   const auto again = run("campaign " + dir.string());
@@ -151,8 +151,13 @@ TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
   const auto series = dir / "runs" / "re-0.5" / "output" / "timeseries.csv";
   const pid_t pid = hs::test::start_hemoscale({"campaign", dir.string()}, dir / "console.txt");
   const bool sampling = hs::test::wait_until([&] { return hs::test::line_count(series) >= 3; }, std::chrono::seconds(120));
+  // Meanwhile --status shows the run as running, and a second campaign on the folder leaves it to the first.
+  const auto running = run("campaign " + dir.string() + " --status");
+  const auto second = run("campaign " + dir.string());
   kill(pid, SIGTERM);
   ASSERT_TRUE(sampling) << hs::test::file_text(dir / "console.txt");
+  EXPECT_NE(running.output.find("1 running"), std::string::npos) << running.output;
+  EXPECT_EQ(second.code, 0) << second.output;
   EXPECT_EQ(hs::test::wait_for_exit(pid), 128 + SIGTERM) << hs::test::file_text(dir / "console.txt");
   EXPECT_TRUE(fs::exists(series.parent_path() / "checkpoint"));
   const auto status = run("campaign " + dir.string() + " --status");
