@@ -59,6 +59,19 @@ pid_t spawn_run(const CampaignOptions& options, const RunRecord& r, int threads)
   _exit(127);
 }
 
+/// How far a run has simulated: the first field of the last row of its timeseries.csv when that column is time_s
+/// (the cell cases), e.g. "0.58 s"; "" otherwise.
+std::string simulated_time(const RunRecord& r) {
+  std::ifstream in(r.output_dir() / "timeseries.csv");
+  std::string header, line, last;
+  if (!std::getline(in, header) || header.rfind("time_s,", 0) != 0) return "";
+  while (std::getline(in, line)) {
+    if (!line.empty()) last = line;
+  }
+  if (last.empty()) return "";
+  return fmt::format("{:.3g} s", std::strtod(last.c_str(), nullptr));
+}
+
 /// The last line starting with "error:" or "numerical failure:" in the run's console output.
 std::string failure_reason(const RunRecord& r, int code) {
   std::ifstream in(r.console_file());
@@ -91,11 +104,13 @@ std::vector<RunRecord> CampaignRunner::records() const {
 std::string CampaignRunner::status_table() const {
   const auto runs = records();
   std::map<RunState, int> count;
-  std::string out = fmt::format("{:<44} {:<10} {:>10} {:>8}  {}\n", "run", "state", "wall", "attempts", "reason");
+  std::string out = fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", "run", "state", "wall", "attempts",
+                                "simulated", "reason");
   for (const auto& r : runs) {
     ++count[r.state];
-    out += fmt::format("{:<44} {:<10} {:>10} {:>8}  {}\n", r.name, to_string(r.state),
-                       r.wall_s > 0 ? common::Progress::format_duration(r.wall_s) : "", r.attempts, r.reason);
+    out += fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", r.name, to_string(r.state),
+                       r.wall_s > 0 ? common::Progress::format_duration(r.wall_s) : "", r.attempts, simulated_time(r),
+                       r.reason);
   }
   out += fmt::format("{} runs: {} done, {} failed, {} running, {} resumable, {} pending\n", runs.size(),
                      count[RunState::done], count[RunState::failed], count[RunState::running],

@@ -16,6 +16,8 @@
 #include <iterator>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "campaign/campaign_spec.hpp"
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
@@ -162,4 +164,10 @@ TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
   EXPECT_TRUE(fs::exists(series.parent_path() / "checkpoint"));
   const auto status = run("campaign " + dir.string() + " --status");
   EXPECT_NE(status.output.find("1 resumable"), std::string::npos) << status.output;
+  // ... with how far it got: the last sample's time, from its time series.
+  std::ifstream in(series);
+  std::string line, last;
+  while (std::getline(in, line)) last = line;
+  const auto reached = fmt::format("{:.3g} s", std::strtod(last.c_str(), nullptr));
+  EXPECT_NE(status.output.find(reached), std::string::npos) << reached << "\n" << status.output;
 }
