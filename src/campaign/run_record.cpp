@@ -62,9 +62,10 @@ RunRecord read_run_record(const std::filesystem::path& dir, const std::string& n
     if (!j.is_discarded()) {
       r.attempts = j.value("attempts", 0);
       r.wall_s = j.value("wall_s", 0.0);
-      if (runs_now(j.value("pid", 0L), r)) {
+      const long pid = j.value("pid", 0L);
+      if (runs_now(pid, r)) {
         r.state = RunState::running;
-        r.pid = j.value("pid", 0L);
+        r.pid = pid;
         return r;
       }
     }
