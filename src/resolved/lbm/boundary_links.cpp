@@ -72,24 +72,37 @@ void capture_link_odd_parts(std::span<const WallLink> links, const double* f, co
   }
 }
 
-void apply_wall_links_aa(std::span<const WallLink> links, double* f, const AaLayout& layout,
-                         std::span<const double> odd_parts) {
+std::vector<AaWallLink> resolve_aa_links(std::span<const WallLink> links, const AaLayout& layout) {
+  std::vector<AaWallLink> resolved;
+  resolved.reserve(links.size());
+  for (const WallLink& l : links) {
+    const int o = D3Q19::opposite(l.dir);
+    resolved.push_back(AaWallLink{.post_i = layout.slot(l.dir, l.node),
+                                  .post_o = layout.slot(o, l.node),
+                                  .second = layout.slot(l.dir, l.second),
+                                  .target = layout.slot(o, l.target),
+                                  .a = l.a, .b = l.b, .c = l.c, .d = l.d, .e = l.e,
+                                  .odd_slot = l.odd_slot,
+                                  .odd_negated = l.dir > D3Q19::half});
+  }
+  return resolved;
+}
+
+void apply_wall_links_aa(std::span<const AaWallLink> links, double* f, std::span<const double> odd_parts) {
   const auto n = static_cast<std::ptrdiff_t>(links.size());
   // As apply_wall_links: only tens of thousands of links are worth a parallel region.
 #pragma omp parallel for schedule(static) if (n >= 65536)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
-    const WallLink& l = links[static_cast<std::size_t>(k)];
-    const int o = D3Q19::opposite(l.dir);
-    const double post_i = f[layout.slot(l.dir, l.node)];
-    const double post_o = f[layout.slot(o, l.node)];
+    const AaWallLink& l = links[static_cast<std::size_t>(k)];
+    const double post_i = f[l.post_i];
+    const double post_o = f[l.post_o];
     double odd_pre = 0.0;
     if (l.e != 0.0) {
       const double pair = odd_parts[static_cast<std::size_t>(l.odd_slot)];
-      odd_pre = l.dir <= D3Q19::half ? pair : -pair;
+      odd_pre = l.odd_negated ? -pair : pair;
     }
     const double odd_change = odd_pre - 0.5 * (post_i - post_o);
-    f[layout.slot(o, l.target)] =
-        l.a * post_i + l.b * f[layout.slot(l.dir, l.second)] + l.c * post_o + l.d + l.e * odd_change;
+    f[l.target] = l.a * post_i + l.b * f[l.second] + l.c * post_o + l.d + l.e * odd_change;
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "common/vec3.hpp"
 
@@ -86,10 +87,25 @@ struct AaLayout {
 void capture_link_odd_parts(std::span<const WallLink> links, const double* f, const AaLayout& layout,
                             std::span<double> odd_parts);
 
-/// apply_wall_links for the single AA buffer: the same values, written to and read from the slots of `layout`.
+/// A wall link resolved for one AA layout (the layout alternates with the step): the slots of its four accesses and
+/// its coefficients in one record. Along a wrapped x each slot costs a modulo; these are computed once, not per step
+/// (the per-step slot arithmetic took about half the time of the links' pass).
+struct AaWallLink {
+  std::size_t post_i;        // f*_i(x)
+  std::size_t post_o;        // f*_-i(x)
+  std::size_t second;        // f*_i(x - c_i), read where b != 0
+  std::size_t target;        // written: the slot x + c_i pulls f_-i from
+  double a, b, c, d, e;      // as WallLink
+  std::ptrdiff_t odd_slot;   // as WallLink::odd_slot
+  bool odd_negated;          // i > 9: the link's own odd part is its pair's, negated
+};
+
+/// The links in `layout`'s slots, in the same order.
+std::vector<AaWallLink> resolve_aa_links(std::span<const WallLink> links, const AaLayout& layout);
+
+/// apply_wall_links for the single AA buffer: the same values, written to and read from the links' resolved slots.
 /// `odd_parts`: the pre-collision odd parts of the step just made, at the links' odd_slot (read where e != 0).
-void apply_wall_links_aa(std::span<const WallLink> links, double* f, const AaLayout& layout,
-                         std::span<const double> odd_parts);
+void apply_wall_links_aa(std::span<const AaWallLink> links, double* f, std::span<const double> odd_parts);
 
 /// A ghost node on an open face, set by non-equilibrium extrapolation (Guo, Zheng & Shi 2002, Chinese Phys.
 /// 11:366): f*_i(ghost) = f^eq_i(rho_b, u_b) + [f*_i(inner) - f^eq_i(rho*, u*)(inner)], where rho*, u* are the

@@ -103,6 +103,11 @@ void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>
     AaLayout raw = aa_layout();
     raw.wrap_x = 0;
     capture_link_odd_parts(links_, src_.data(), raw, link_odd_parts_);
+    for (const bool natural : {false, true}) {
+      AaLayout layout = aa_layout();
+      layout.natural = natural;
+      aa_links_[natural ? 1 : 0] = resolve_aa_links(links_, layout);
+    }
   } else {
     dst_ = src_;
   }
@@ -129,7 +134,7 @@ void FluidLattice::apply_boundaries() {
     // After a step the kernel has applied the fused links already; at initialize() all links are due.
     const std::size_t first = fused_links_done_ ? fused_links_ : 0;
     fused_links_done_ = false;
-    apply_wall_links_aa(std::span<const WallLink>(links_).subspan(first), src_.data(), aa_layout(), link_odd_parts_);
+    apply_wall_links_aa(std::span<const AaWallLink>(aa_links_[steps_ % 2]).subspan(first), src_.data(), link_odd_parts_);
     return;
   }
   apply_open_boundaries(open_nodes_, src_.data(), stride_);
@@ -180,13 +185,12 @@ std::ptrdiff_t FluidLattice::aa_wrap_x() const {
 /// nodes they read are updated (their values depend on no ghost pass), while those are in cache; the others after
 /// the ghost pass, in apply_boundaries().
 void FluidLattice::aa_stream_collide() {
-  AaLayout after = aa_layout();
-  after.natural = !after.natural;
-  const std::span<const WallLink> links(links_);
+  // The links in the layout after this step (the natural one after an even step).
+  const std::span<const AaWallLink> links(aa_links_[(steps_ + 1) % 2]);
   const std::function<void(int, LayerPair)> apply = [&](int z, LayerPair pair) {
     const std::size_t group = 2 * static_cast<std::size_t>(z) + (pair == LayerPair::with_above ? 1 : 0);
     const std::size_t k0 = layer_links_[group];
-    apply_wall_links_aa(links.subspan(k0, layer_links_[group + 1] - k0), src_.data(), after, link_odd_parts_);
+    apply_wall_links_aa(links.subspan(k0, layer_links_[group + 1] - k0), src_.data(), link_odd_parts_);
   };
   const bool fused = fused_links_ > 0;
   resolved::aa_stream_collide(
