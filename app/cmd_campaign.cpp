@@ -27,7 +27,7 @@ int run_campaign(const CampaignArgs& args) {
   hs::campaign::CampaignRunner runner(spec, {.executable = std::filesystem::read_symlink("/proc/self/exe"),
                                              .retry_failed = args.retry_failed,
                                              .reopen_done = args.reopen_done,
-                                             .show_progress = hs::common::Progress::terminal_attached(),
+                                             .show_progress = true,   // a line on a terminal, dated lines in a log
                                              .max_runs = args.max_runs});
   if (args.status) {
     std::fputs(runner.status_table().c_str(), stdout);

@@ -138,7 +138,10 @@ int CampaignRunner::run() {
   std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
   int started = 0;
   std::size_t next = 0;
-  common::Progress progress(fmt::format("campaign {}", spec_.name), static_cast<long>(queue.size()), options_.show_progress);
+  // Runs take minutes to hours: in a log every finished run is worth a line.
+  common::Progress progress(fmt::format("campaign {}", spec_.name), static_cast<long>(queue.size()), options_.show_progress,
+                            std::chrono::seconds(0));
+  progress.update(0);   // the ETA counts from here
   const common::StopRequestScope stop_requests;
   bool stop_forwarded = false;
   while (next < queue.size() || !running.empty()) {
@@ -190,6 +193,8 @@ int CampaignRunner::run() {
       r.state = common::Checkpoint::exists(r.output_dir() / "checkpoint") ? RunState::resumable : RunState::pending;
     }
     write_run_status(r);
+    progress.note(fmt::format("{}: {} after {}{}", r.name, to_string(r.state),
+                              common::Progress::format_duration(r.wall_s), r.reason.empty() ? "" : " (" + r.reason + ")"));
     // A run stopped on request or killed is not finished: the progress line (and its ETA) counts only those that are.
     if (r.state == RunState::done || r.state == RunState::failed) progress.update(++finished);
     write_dataset(spec_, runs);

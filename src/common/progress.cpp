@@ -1,23 +1,41 @@
 // SPDX-License-Identifier: MIT
-// A one-line progress indicator with ETA for long runs.
+// Progress with ETA for long runs: a redrawn line on a terminal, dated lines in a log file, nothing in CI.
 #include "common/progress.hpp"
 
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 
 #include <fmt/format.h>
 
 namespace hs::common {
 
-Progress::Progress(std::string label, long total, bool enabled)
-    : label_(std::move(label)), total_(total), enabled_(enabled && terminal_attached()),
-      start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
+namespace {
+
+bool in_ci() { return std::getenv("CI") != nullptr; }
+
+/// Local wall-clock time, "2026-11-23 04:41:12": a log read hours later needs to know when.
+std::string timestamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S", &local);
+  return text;
+}
+
+}  // namespace
+
+Progress::Progress(std::string label, long total, bool enabled, std::chrono::seconds log_every)
+    : label_(std::move(label)), total_(total),
+      mode_(!enabled || in_ci() ? Mode::off : (isatty(STDERR_FILENO) != 0 ? Mode::terminal : Mode::log)),
+      log_every_(log_every), start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
 
 Progress::~Progress() { finish(); }
 
-bool Progress::terminal_attached() { return isatty(STDERR_FILENO) != 0 && std::getenv("CI") == nullptr; }
+bool Progress::terminal_attached() { return isatty(STDERR_FILENO) != 0 && !in_ci(); }
 
 std::string Progress::format_duration(double s) {
   if (s < 60.0) return fmt::format("{:.1f}s", s);
@@ -26,28 +44,58 @@ std::string Progress::format_duration(double s) {
   return fmt::format("{}h{:02d}m", total / 3600, (total % 3600) / 60);
 }
 
-void Progress::update(long done) {
-  if (!enabled_ || finished_) return;
-  const auto now = std::chrono::steady_clock::now();
-  if (first_done_ < 0) first_done_ = done;   // a resumed run estimates from where it restarted
-  if (now - last_draw_ < std::chrono::milliseconds(250) && done < total_) return;
-  last_draw_ = now;
-  const double elapsed = std::chrono::duration<double>(now - start_).count();
+std::string Progress::status_text(long done) const {
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fraction = total_ > 0 ? static_cast<double>(done) / static_cast<double>(total_) : 1.0;
-  const long progressed = done - first_done_;
+  const long progressed = done - first_done_;   // a resumed run estimates from where it restarted
   std::string eta = "--";
   if (progressed > 0) {
     eta = format_duration(elapsed * static_cast<double>(total_ - done) / static_cast<double>(progressed));
   }
-  std::fprintf(stderr, "\r%s %5.1f%%  %ld/%ld  elapsed %s  ETA %s   ", label_.c_str(), 100.0 * fraction, done, total_,
-               format_duration(elapsed).c_str(), eta.c_str());
+  return fmt::format("{} {:5.1f}%  {}/{}  elapsed {}  ETA {}", label_, 100.0 * fraction, done, total_,
+                     format_duration(elapsed), eta);
+}
+
+void Progress::update(long done) {
+  if (mode_ == Mode::off || finished_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (first_done_ < 0) first_done_ = done;
+  latest_done_ = done;
+  if (mode_ == Mode::terminal) {
+    if (now - last_draw_ < std::chrono::milliseconds(250) && done < total_ && line_open_) return;
+    std::fprintf(stderr, "\r%s   ", status_text(done).c_str());
+    line_open_ = true;
+  } else {
+    const bool due = done != last_done_ && (now - last_draw_ >= log_every_ || done >= total_);
+    if (!due) return;
+    std::fprintf(stderr, "%s  %s\n", timestamp().c_str(), status_text(done).c_str());
+    last_done_ = done;
+  }
+  last_draw_ = now;
+  std::fflush(stderr);
+}
+
+void Progress::note(const std::string& line) {
+  if (mode_ == Mode::off) return;
+  if (mode_ == Mode::terminal) {
+    // Over the progress line (padded to cover it); the next update() draws it again below.
+    std::fprintf(stderr, "\r%-80s\n", line.c_str());
+    line_open_ = false;
+  } else {
+    std::fprintf(stderr, "%s  %s\n", timestamp().c_str(), line.c_str());
+  }
   std::fflush(stderr);
 }
 
 void Progress::finish() {
-  if (!enabled_ || finished_) return;
+  if (mode_ == Mode::off || finished_) return;
   finished_ = true;
-  std::fprintf(stderr, "\n");
+  if (mode_ == Mode::terminal && line_open_) std::fprintf(stderr, "\n");
+  // A log ends with where the run stopped (it may stop before its total: settled, interrupted).
+  if (mode_ == Mode::log && latest_done_ >= 0 && latest_done_ != last_done_) {
+    std::fprintf(stderr, "%s  %s\n", timestamp().c_str(), status_text(latest_done_).c_str());
+  }
+  std::fflush(stderr);
 }
 
 }  // namespace hs::common

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A one-line progress indicator with ETA for long runs; silent when stderr is not a terminal or in CI.
+// Progress with ETA for long runs: a redrawn line on a terminal, dated lines in a log file, nothing in CI.
 #pragma once
 
 #include <chrono>
@@ -9,13 +9,19 @@ namespace hs::common {
 
 class Progress {
  public:
-  Progress(std::string label, long total, bool enabled = true);
+  /// On a terminal the line is redrawn a few times per second. Otherwise (stderr redirected to a log, a run left
+  /// in the background) a dated line is written when `done` has moved and `log_every` has passed since the last
+  /// one, and at the end. Silent when !enabled or the CI variable is set.
+  Progress(std::string label, long total, bool enabled = true,
+           std::chrono::seconds log_every = std::chrono::seconds(300));
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
 
-  /// Call often; redraws at most a few times per second. `done` counts from 0 to total.
+  /// Call often. `done` counts from 0 to total.
   void update(long done);
+  /// One line of news (a run finished), on its own line above the progress line; dated in a log.
+  void note(const std::string& line);
   void finish();
   /// Human-readable duration, e.g. "1h02m", "3m05s", "12.4s".
   static std::string format_duration(double seconds);
@@ -23,11 +29,18 @@ class Progress {
   static bool terminal_attached();
 
  private:
+  enum class Mode { off, terminal, log };
+  [[nodiscard]] std::string status_text(long done) const;
+
   std::string label_;
   long total_;
   long first_done_ = -1;
-  bool enabled_;
+  long latest_done_ = -1;      // the count of the last update()
+  long last_done_ = -1;        // log: the count of the last line written
+  Mode mode_;
   bool finished_ = false;
+  bool line_open_ = false;     // terminal: a progress line is drawn and not yet ended
+  std::chrono::seconds log_every_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_;
 };
