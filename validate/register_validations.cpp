@@ -2,6 +2,7 @@
 // The single list of validations `hemoscale validate NAME` runs: one line per validation.
 #include "app/registry.hpp"
 #include "validate/pries_validation.hpp"
+#include "validate/resolved_dataset_validation.hpp"
 #include "validate/stretching_validation.hpp"
 
 
@@ -12,6 +13,7 @@ std::map<std::string, TaskEntry> validations() {
   r["stretching"] = {"RBC optical-tweezers stretching vs Mills et al. 2004 (13 forces, 258 + 642 vertices)", hs::resolved::validate_stretching};
   r["pries"] = {"Fahraeus-Lindqvist tube table (CFD-DEM) vs Pries et al. 1992; --closures NAME|FILE|DIR", hs::unresolved::validate_pries};
   r["pries-wall"] = {"the pries table with the Haberman-Sayre wall correction of the drag; --closures NAME|FILE|DIR", hs::unresolved::validate_pries_wall};
+  r["resolved-dataset"] = {"the campaign's data/resolved/dataset.csv: every (Re, r*) row, the acceptance rules, ranges vs the seed paper", hs::campaign::validate_resolved_dataset};
   return r;
 }
 
