@@ -115,6 +115,23 @@ std::string CampaignRunner::status_table() const {
   out += fmt::format("{} runs: {} done, {} failed, {} running, {} resumable, {} pending\n", runs.size(),
                      count[RunState::done], count[RunState::failed], count[RunState::running],
                      count[RunState::resumable], count[RunState::pending]);
+  double wall_total = 0.0;
+  double wall_done = 0.0;
+  for (const auto& r : runs) {
+    wall_total += r.wall_s;
+    if (r.state == RunState::done) wall_done += r.wall_s;
+  }
+  const int left = count[RunState::running] + count[RunState::resumable] + count[RunState::pending];
+  out += fmt::format("wall time of the runs so far {} ({} thread{} per run)", common::Progress::format_duration(wall_total),
+                     spec_.threads_per_job, spec_.threads_per_job == 1 ? "" : "s");
+  if (count[RunState::done] > 0 && left > 0) {
+    // A rough guide: runs differ (longer periods at small r*, more steps at small Re) and part-done ones count whole.
+    const double mean = wall_done / count[RunState::done];
+    out += fmt::format("; at the finished runs' mean of {} each, {} left take about {} at {} at a time",
+                       common::Progress::format_duration(mean), left,
+                       common::Progress::format_duration(mean * left / spec_.jobs), spec_.jobs);
+  }
+  out += "\n";
   return out;
 }
 

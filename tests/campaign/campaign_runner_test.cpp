@@ -101,6 +101,7 @@ TEST(Campaign, AFailedRunIsRecordedAndDoesNotStopTheOthers) {
   const auto status = run("campaign " + dir.string() + " --status");
   EXPECT_NE(status.output.find("1 done, 1 failed"), std::string::npos) << status.output;
   EXPECT_NE(status.output.find("Mach"), std::string::npos) << status.output;   // the reason, from the run's message
+  EXPECT_NE(status.output.find("wall time of the runs so far"), std::string::npos) << status.output;
   EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").rows.size(), 1u);
   // A retry starts afresh and keeps a failed attempt's output beside it (outputs are never overwritten). This run
   // fails while reading its case, before it has an output folder, so one is left here as a later failure would.
