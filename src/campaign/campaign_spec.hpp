@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -29,6 +30,17 @@ struct DatasetColumn {
   std::string only_value;
 };
 
+/// An exception to the template for part of the grid, with its reason: the runs whose axes have all the values in
+/// `when` get `case_key` set to `value` (after the grid's own keys). In campaign.toml:
+///   [override.NAME]  when = { re = 0.4, setup = "drag" }  key = "numerics.max_tau"  value = 12.5  why = "..."
+struct GridOverride {
+  std::string name;
+  std::vector<std::pair<std::string, GridValue>> when;   // axis name -> value
+  std::string case_key;
+  double value = 0.0;
+  std::string why;
+};
+
 struct CampaignSpec {
   std::filesystem::path dir;                 // the campaign folder
   std::string name;
@@ -36,6 +48,7 @@ struct CampaignSpec {
   int jobs = 2;                              // runs at the same time
   int threads_per_job = 1;                   // OMP_NUM_THREADS of each run
   std::vector<GridAxis> axes;
+  std::vector<GridOverride> overrides;
   std::filesystem::path dataset_file;
   std::vector<std::string> row_axes;         // axes that make a row (the others are merged into it)
   std::vector<DatasetColumn> columns;
@@ -43,6 +56,9 @@ struct CampaignSpec {
 
 /// Reads and checks `dir/campaign.toml` (strict: ConfigError naming key and value on any problem).
 CampaignSpec read_campaign_spec(const std::filesystem::path& dir);
+
+/// Whether a run with these axis values (in the spec's axis order) is one the override is for.
+bool matches(const GridOverride& o, const std::vector<GridAxis>& axes, const std::vector<GridValue>& point);
 
 /// Text of a grid value as it appears in run names and dataset cells ("0.3", "drag").
 std::string to_text(const GridValue& v);

@@ -36,6 +36,27 @@ std::string run_name(const CampaignSpec& spec, const GridPoint& point) {
   return name;
 }
 
+namespace {
+
+/// Sets the dotted `key` of `doc` (missing tables are created); `where` names the campaign.toml entry for errors.
+template <class Value>
+void set_key(toml::table& doc, const std::string& key, Value value, const std::string& where) {
+  toml::table* t = &doc;
+  std::size_t start = 0;
+  for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.', start)) {
+    const std::string part = key.substr(start, dot - start);
+    if (!t->contains(part)) t->insert(part, toml::table{});
+    t = t->get(part)->as_table();
+    if (t == nullptr) {
+      throw common::ConfigError(fmt::format("{} key = \"{}\": '{}' is not a table in the template", where, key, part));
+    }
+    start = dot + 1;
+  }
+  t->insert_or_assign(key.substr(start), std::move(value));
+}
+
+}  // namespace
+
 void write_run_case(const CampaignSpec& spec, const GridPoint& point, const std::filesystem::path& file) {
   toml::table doc;
   try {
@@ -43,30 +64,24 @@ void write_run_case(const CampaignSpec& spec, const GridPoint& point, const std:
   } catch (const toml::parse_error& e) {
     throw common::ConfigError(fmt::format("{}: malformed TOML: {}", spec.template_case.string(), e.description()));
   }
+  const std::string campaign_file = (spec.dir / "campaign.toml").string();
   for (std::size_t i = 0; i < spec.axes.size(); ++i) {
-    const std::string& key = spec.axes[i].case_key;
-    toml::table* t = &doc;
-    std::size_t start = 0;
-    for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.', start)) {
-      const std::string part = key.substr(start, dot - start);
-      if (!t->contains(part)) t->insert(part, toml::table{});
-      t = t->get(part)->as_table();
-      if (t == nullptr) {
-        throw common::ConfigError(fmt::format("{}: [grid.{}] key = \"{}\": '{}' is not a table in the template",
-                                              (spec.dir / "campaign.toml").string(), spec.axes[i].name, key, part));
-      }
-      start = dot + 1;
-    }
-    const std::string leaf = key.substr(start);
+    const std::string where = fmt::format("{}: [grid.{}]", campaign_file, spec.axes[i].name);
     if (const auto* d = std::get_if<double>(&point.values[i])) {
-      t->insert_or_assign(leaf, *d);
+      set_key(doc, spec.axes[i].case_key, *d, where);
     } else {
-      t->insert_or_assign(leaf, std::get<std::string>(point.values[i]));
+      set_key(doc, spec.axes[i].case_key, std::get<std::string>(point.values[i]), where);
     }
+  }
+  std::string applied;
+  for (const GridOverride& o : spec.overrides) {
+    if (!matches(o, spec.axes, point.values)) continue;
+    set_key(doc, o.case_key, o.value, fmt::format("{}: [override.{}]", campaign_file, o.name));
+    applied += fmt::format("# [override.{}] {} = {}: {}\n", o.name, o.case_key, o.value, o.why);
   }
   std::ostringstream text;
   text << "# Written by `hemoscale campaign` from " << spec.template_case.filename().string() << " with "
-       << run_name(spec, point) << "\n" << doc << "\n";
+       << run_name(spec, point) << "\n" << applied << doc << "\n";
   common::write_file_atomic(file, text.str());
 }
 

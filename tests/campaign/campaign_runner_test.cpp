@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "campaign/campaign_spec.hpp"
+#include "campaign/case_template.hpp"
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
 
@@ -137,6 +138,35 @@ TEST(Campaign, BadCampaignFileIsAConfigError) {
   const auto dir = make_campaign("bad", "[0.1]");
   std::ofstream(dir / "campaign.toml", std::ios::app) << "[dataset.columns.x]\npointer = \"/x\"\nonly_axis = \"nope\"\n";
   EXPECT_THROW(hs::campaign::read_campaign_spec(dir), hs::common::ConfigError);
+}
+
+TEST(Campaign, AnOverrideChangesOnlyTheRunsItMatchesAndSaysWhy) {
+  const auto dir = make_campaign("override", "[0.1, 0.2]");
+  std::ofstream(dir / "campaign.toml", std::ios::app)
+      << "[override.slow]\nwhen = { re = 0.2 }\nkey = \"numerics.tau\"\nvalue = 3.5\nwhy = \"a test reason\"\n";
+  const auto spec = hs::campaign::read_campaign_spec(dir);
+  ASSERT_EQ(spec.overrides.size(), 1u);
+  for (const auto& point : hs::campaign::grid_points(spec)) {
+    const auto file = dir / (hs::campaign::run_name(spec, point) + ".toml");
+    hs::campaign::write_run_case(spec, point, file);
+    std::ifstream in(file);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const bool matched = std::get<double>(point.values[0]) == 0.2;
+    EXPECT_EQ(text.find("tau = 3.5") != std::string::npos, matched) << text;
+    EXPECT_EQ(text.find("tau = 2.5") != std::string::npos, !matched) << text;
+    EXPECT_EQ(text.find("# [override.slow] numerics.tau = 3.5: a test reason") != std::string::npos, matched) << text;
+  }
+}
+
+TEST(Campaign, AnOverrideThatMatchesNoRunIsAConfigError) {
+  const auto not_an_axis = make_campaign("override_axis", "[0.1]");
+  std::ofstream(not_an_axis / "campaign.toml", std::ios::app)
+      << "[override.x]\nwhen = { r_star = 0.2 }\nkey = \"numerics.tau\"\nvalue = 3.5\nwhy = \"w\"\n";
+  EXPECT_THROW(hs::campaign::read_campaign_spec(not_an_axis), hs::common::ConfigError);
+  const auto not_a_value = make_campaign("override_value", "[0.1]");
+  std::ofstream(not_a_value / "campaign.toml", std::ios::app)
+      << "[override.x]\nwhen = { re = 0.3 }\nkey = \"numerics.tau\"\nvalue = 3.5\nwhy = \"w\"\n";
+  EXPECT_THROW(hs::campaign::read_campaign_spec(not_a_value), hs::common::ConfigError);
 }
 
 TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
