@@ -38,10 +38,11 @@ int run_fit_command(const FitArgs& args) {
   fs::remove(folder.checkpoint_dir());
   fs::copy_file(args.fit_file, folder.file("fit.toml"));
   hs::closures::run_fit(request, folder.path(), args.quiet);
-  const bool plotted = request.plot && !args.no_plot && hs::closures::render_fit_report(folder.path());
+  const bool wanted = request.plot && !args.no_plot;
+  const bool plotted = wanted && hs::closures::render_fit_report(folder.path());
   if (!args.quiet) {
-    fmt::print("wrote {}{}\n", (folder.path() / (request.name + ".toml")).string(),
-               plotted ? " and report.png" : " (no report.png: /usr/bin/python3 with matplotlib not found)");
+    const char* why_not = wanted ? " (no report.png: /usr/bin/python3 with matplotlib not found)" : "";
+    fmt::print("wrote {}{}\n", (folder.path() / (request.name + ".toml")).string(), plotted ? " and report.png" : why_not);
   }
   return 0;
 }
