@@ -37,6 +37,9 @@ def main():
         ax.set_xlabel(xl)
         ax.set_ylabel(yl)
         ax.set_title(f"{len(pts)} of {len(rows)} rows", fontsize=9)
+    # Stokes drag: C_d ~ 1 / Re_p, a straight line of slope -1 on log axes.
+    axes[1].set_xscale("log")
+    axes[1].set_yscale("log")
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     print(out)
