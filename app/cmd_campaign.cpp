@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: MIT
 // `hemoscale campaign CAMPAIGN_DIR`: run (or resume) every case of a campaign grid, then assemble its dataset.
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -9,7 +7,6 @@
 
 #include "app/commands.hpp"
 #include "campaign/campaign_runner.hpp"
-#include "common/progress.hpp"
 
 namespace hs::app {
 namespace {

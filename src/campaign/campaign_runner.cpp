@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -95,8 +96,12 @@ std::vector<RunRecord> CampaignRunner::records() const {
     const std::string name = run_name(spec_, p);
     const auto dir = spec_.dir / "runs" / name;
     std::filesystem::create_directories(dir);
-    if (!std::filesystem::exists(dir / "case.toml")) write_run_case(spec_, p, dir / "case.toml");
-    out.push_back(read_run_record(dir, name));
+    RunRecord r = read_run_record(dir, name);
+    // A run never started follows campaign.toml as it is now (an override added, the template edited); one that
+    // has started keeps the case it started with.
+    const bool never_started = r.state == RunState::pending && r.attempts == 0 && !std::filesystem::exists(r.output_dir());
+    if (never_started || !std::filesystem::exists(dir / "case.toml")) write_run_case(spec_, p, dir / "case.toml");
+    out.push_back(std::move(r));
   }
   return out;
 }
@@ -127,9 +132,10 @@ std::string CampaignRunner::status_table() const {
   if (count[RunState::done] > 0 && left > 0) {
     // A rough guide: runs differ (longer periods at small r*, more steps at small Re) and part-done ones count whole.
     const double mean = wall_done / count[RunState::done];
+    const double rounds = std::ceil(static_cast<double>(left) / spec_.jobs);
     out += fmt::format("; at the finished runs' mean of {} each, {} left take about {} at {} at a time",
-                       common::Progress::format_duration(mean), left,
-                       common::Progress::format_duration(mean * left / spec_.jobs), spec_.jobs);
+                       common::Progress::format_duration(mean), left, common::Progress::format_duration(mean * rounds),
+                       spec_.jobs);
   }
   out += "\n";
   return out;
@@ -158,7 +164,7 @@ int CampaignRunner::run() {
   // Runs take minutes to hours: in a log every finished run is worth a line.
   common::Progress progress(fmt::format("campaign {}", spec_.name), static_cast<long>(queue.size()), options_.show_progress,
                             std::chrono::seconds(0));
-  progress.update(0);   // the ETA counts from here
+  if (!queue.empty()) progress.update(0);   // the ETA counts from here (a finished campaign says nothing)
   const common::StopRequestScope stop_requests;
   bool stop_forwarded = false;
   while (next < queue.size() || !running.empty()) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Reads campaign.toml.
+// Reads campaign.toml: the grid, its overrides and the dataset columns.
 #include "campaign/campaign_spec.hpp"
 
 #include <algorithm>
@@ -12,9 +12,11 @@
 
 namespace hs::campaign {
 
-namespace {
-bool same_value(const GridValue& a, const GridValue& b);
-}  // namespace
+bool same_value(const GridValue& a, const GridValue& b) {
+  if (a.index() != b.index()) return false;
+  if (const auto* d = std::get_if<double>(&a)) return std::abs(*d - std::get<double>(b)) <= 1e-12 * std::max(1.0, std::abs(*d));
+  return std::get<std::string>(a) == std::get<std::string>(b);
+}
 
 bool matches(const GridOverride& o, const std::vector<GridAxis>& axes, const std::vector<GridValue>& point) {
   for (const auto& [axis_name, value] : o.when) {
@@ -43,24 +45,49 @@ GridAxis read_axis(common::ConfigSection axis, const std::string& name) {
   return a;
 }
 
-bool same_value(const GridValue& a, const GridValue& b) {
-  if (a.index() != b.index()) return false;
-  if (const auto* d = std::get_if<double>(&a)) return std::abs(*d - std::get<double>(b)) <= 1e-12 * std::max(1.0, std::abs(*d));
-  return std::get<std::string>(a) == std::get<std::string>(b);
+std::string listed(const std::vector<GridValue>& values) {
+  std::string out;
+  for (const auto& v : values) out += (out.empty() ? "" : ", ") + to_text(v);
+  return out;
+}
+
+std::string axis_names(const std::vector<GridAxis>& axes) {
+  std::string out;
+  for (const auto& a : axes) out += (out.empty() ? "" : ", ") + a.name;
+  return out;
+}
+
+/// Two overrides that set the same key and can both match one run (no axis where they ask for different values).
+bool overlap(const GridOverride& a, const GridOverride& b) {
+  if (a.case_key != b.case_key) return false;
+  for (const auto& [axis, value] : a.when) {
+    for (const auto& [other_axis, other_value] : b.when) {
+      if (axis == other_axis && !same_value(value, other_value)) return false;
+    }
+  }
+  return true;
 }
 
 GridOverride read_override(common::ConfigSection o, const std::string& name, const std::vector<GridAxis>& axes) {
+  // A number only: the keys it is for (tau caps, iteration counts, factors) are numbers.
   GridOverride g{name, {}, o.string("key"), o.number_in("value", -1e300, 1e300), o.string("why")};
+  for (const auto& a : axes) {
+    if (a.case_key == g.case_key) {
+      o.fail("key", fmt::format("is [grid.{}]'s key: an override may not change a grid value (the run's name and "
+                                "dataset row would no longer say what it ran)", a.name));
+    }
+  }
+  if (g.why.find_first_of("\n\r") != std::string::npos) o.fail("why", "must be one line (it becomes a comment in case.toml)");
   auto when = o.section("when");
   const auto keys = when.keys();
-  if (keys.empty()) o.fail("when", "names no grid axis: give { axis = value, ... }");
+  if (keys.empty()) o.fail("when", fmt::format("names no grid axis: give {{ axis = value, ... }} with axes of {}", axis_names(axes)));
   for (const auto& axis_name : keys) {
     const auto axis = std::find_if(axes.begin(), axes.end(), [&](const GridAxis& a) { return a.name == axis_name; });
-    if (axis == axes.end()) when.fail(axis_name, "is not a [grid] axis");
+    if (axis == axes.end()) when.fail(axis_name, fmt::format("is not a [grid] axis (axes: {})", axis_names(axes)));
     const bool labelled = std::holds_alternative<std::string>(axis->values.front());
     GridValue v = labelled ? GridValue(when.string(axis_name)) : GridValue(when.number_in(axis_name, -1e300, 1e300));
     if (std::none_of(axis->values.begin(), axis->values.end(), [&](const GridValue& x) { return same_value(x, v); })) {
-      when.fail(axis_name, fmt::format("{} is not one of the axis' values: the override would match no run", to_text(v)));
+      when.fail(axis_name, fmt::format("matches no run: the axis' values are {}", listed(axis->values)));
     }
     g.when.emplace_back(axis_name, std::move(v));
   }
@@ -99,7 +126,17 @@ CampaignSpec read_campaign_spec(const std::filesystem::path& dir) {
   for (const auto& name : grid.keys()) spec.axes.push_back(read_axis(grid.section(name), name));
   if (spec.axes.empty()) throw common::ConfigError(file->name() + ": [grid] needs at least one axis [grid.NAME]");
   auto overrides = root.section_or_empty("override");
-  for (const auto& name : overrides.keys()) spec.overrides.push_back(read_override(overrides.section(name), name, spec.axes));
+  for (const auto& name : overrides.keys()) {
+    GridOverride o = read_override(overrides.section(name), name, spec.axes);
+    for (const auto& earlier : spec.overrides) {
+      if (overlap(earlier, o)) {
+        overrides.section(name).fail("key", fmt::format("is also set by [override.{}] for some of the same runs: which "
+                                                        "value wins would be unclear; make their 'when' disjoint",
+                                                        earlier.name));
+      }
+    }
+    spec.overrides.push_back(std::move(o));
+  }
 
   auto d = root.section("dataset");
   spec.dataset_file = d.file_path("file");

@@ -31,7 +31,8 @@ struct DatasetColumn {
 };
 
 /// An exception to the template for part of the grid, with its reason: the runs whose axes have all the values in
-/// `when` get `case_key` set to `value` (after the grid's own keys). In campaign.toml:
+/// `when` get `case_key` (not a grid axis' key) set to `value`, a number. Two overrides of one key must not match a
+/// common run. In campaign.toml:
 ///   [override.NAME]  when = { re = 0.4, setup = "drag" }  key = "numerics.max_tau"  value = 12.5  why = "..."
 struct GridOverride {
   std::string name;
@@ -56,6 +57,9 @@ struct CampaignSpec {
 
 /// Reads and checks `dir/campaign.toml` (strict: ConfigError naming key and value on any problem).
 CampaignSpec read_campaign_spec(const std::filesystem::path& dir);
+
+/// Grid values compare equal when of one kind and, for numbers, within 1e-12 relative (both are parsed from text).
+bool same_value(const GridValue& a, const GridValue& b);
 
 /// Whether a run with these axis values (in the spec's axis order) is one the override is for.
 bool matches(const GridOverride& o, const std::vector<GridAxis>& axes, const std::vector<GridValue>& point);

@@ -22,7 +22,8 @@ std::vector<GridPoint> grid_points(const CampaignSpec& spec);
 std::string run_name(const CampaignSpec& spec, const GridPoint& point);
 
 /// Reads the template, sets each axis' `case_key` (a dotted path; missing tables are created) to the point's
-/// value and writes `file`. Throws ConfigError if the template is malformed or a key path crosses a non-table.
+/// value, then the keys of the overrides that match the point (each named, with its reason, in a comment at the
+/// top), and writes `file`. Throws ConfigError if the template is malformed or a key path crosses a non-table.
 void write_run_case(const CampaignSpec& spec, const GridPoint& point, const std::filesystem::path& file);
 
 }  // namespace hs::campaign

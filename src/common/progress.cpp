@@ -35,8 +35,6 @@ Progress::Progress(std::string label, long total, bool enabled, std::chrono::sec
 
 Progress::~Progress() { finish(); }
 
-bool Progress::terminal_attached() { return isatty(STDERR_FILENO) != 0 && !in_ci(); }
-
 std::string Progress::format_duration(double s) {
   if (s < 60.0) return fmt::format("{:.1f}s", s);
   const long total = static_cast<long>(s + 0.5);
@@ -78,8 +76,8 @@ void Progress::update(long done) {
 void Progress::note(const std::string& line) {
   if (mode_ == Mode::off) return;
   if (mode_ == Mode::terminal) {
-    // Over the progress line (padded to cover it); the next update() draws it again below.
-    std::fprintf(stderr, "\r%-80s\n", line.c_str());
+    // Over the progress line (erased to the end of the line); the next update() draws it again below.
+    std::fprintf(stderr, "\r\033[K%s\n", line.c_str());
     line_open_ = false;
   } else {
     std::fprintf(stderr, "%s  %s\n", timestamp().c_str(), line.c_str());

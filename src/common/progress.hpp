@@ -25,8 +25,6 @@ class Progress {
   void finish();
   /// Human-readable duration, e.g. "1h02m", "3m05s", "12.4s".
   static std::string format_duration(double seconds);
-  /// True when stderr is a terminal and the CI variable is unset.
-  static bool terminal_attached();
 
  private:
   enum class Mode { off, terminal, log };

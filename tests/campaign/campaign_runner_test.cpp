@@ -169,6 +169,37 @@ TEST(Campaign, AnOverrideThatMatchesNoRunIsAConfigError) {
   EXPECT_THROW(hs::campaign::read_campaign_spec(not_a_value), hs::common::ConfigError);
 }
 
+TEST(Campaign, AnOverrideMayNotChangeAGridValueOrFightAnother) {
+  const auto grid_key = make_campaign("override_grid_key", "[0.1]");
+  std::ofstream(grid_key / "campaign.toml", std::ios::app)
+      << "[override.x]\nwhen = { re = 0.1 }\nkey = \"flow.reynolds\"\nvalue = 0.2\nwhy = \"w\"\n";
+  EXPECT_THROW(hs::campaign::read_campaign_spec(grid_key), hs::common::ConfigError);
+  const auto two = make_campaign("override_two", "[0.1, 0.2]");
+  std::ofstream(two / "campaign.toml", std::ios::app)
+      << "[override.a]\nwhen = { re = 0.1 }\nkey = \"numerics.tau\"\nvalue = 3.0\nwhy = \"w\"\n"
+      << "[override.b]\nwhen = { re = 0.1 }\nkey = \"numerics.tau\"\nvalue = 3.5\nwhy = \"w\"\n";
+  EXPECT_THROW(hs::campaign::read_campaign_spec(two), hs::common::ConfigError);
+  const auto two_lines = make_campaign("override_why", "[0.1]");
+  std::ofstream(two_lines / "campaign.toml", std::ios::app)
+      << "[override.x]\nwhen = { re = 0.1 }\nkey = \"numerics.tau\"\nvalue = 3.0\nwhy = \"one\\nre = 9\"\n";
+  EXPECT_THROW(hs::campaign::read_campaign_spec(two_lines), hs::common::ConfigError);
+}
+
+TEST(Campaign, ARunNotYetStartedFollowsAnOverrideAddedLater) {
+  const auto dir = make_campaign("override_later", "[0.1, 0.2]");
+  ASSERT_EQ(run("campaign " + dir.string() + " --max-runs 1").code, 0);   // re 0.1 done; re 0.2 not started
+  std::ofstream(dir / "campaign.toml", std::ios::app)
+      << "[override.later]\nwhen = { re = 0.2 }\nkey = \"numerics.tau\"\nvalue = 3.5\nwhy = \"added later\"\n"
+      << "[override.too_late]\nwhen = { re = 0.1 }\nkey = \"numerics.tau\"\nvalue = 3.0\nwhy = \"after its run\"\n";
+  ASSERT_EQ(run("campaign " + dir.string() + " --status").code, 0);
+  const auto text = [&](const char* name) {
+    std::ifstream in(dir / "runs" / name / "case.toml");
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_NE(text("re-0.2").find("tau = 3.5"), std::string::npos) << text("re-0.2");
+  EXPECT_EQ(text("re-0.1").find("tau = 3.0"), std::string::npos) << "a finished run keeps the case it ran: " << text("re-0.1");
+}
+
 TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
   // SIGTERM to the campaign (Ctrl-C, `kill`, a batch system's time limit): it asks each running run to stop, each
   // writes its checkpoint, and the campaign exits with 128 + 15 leaving the runs resumable, not failed.

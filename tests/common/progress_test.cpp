@@ -19,13 +19,20 @@ namespace {
 /// Runs `body` with stderr sent to a file and the CI variable as given; returns what was written.
 template <class Body>
 std::string stderr_of(Body body, bool ci) {
+  // A file of its own per test: ctest runs the tests of this binary as parallel processes.
+  const auto file = std::filesystem::temp_directory_path() /
+                    (std::string("hs_progress_") + ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                     (ci ? "_ci" : "") + ".txt");
+  std::fflush(stderr);
+  std::FILE* sink = std::fopen(file.c_str(), "w");
+  if (sink == nullptr) {
+    ADD_FAILURE() << "cannot write " << file;
+    return "";
+  }
   const char* old_ci = std::getenv("CI");
   const std::optional<std::string> saved = old_ci ? std::optional<std::string>(old_ci) : std::nullopt;
   if (ci) setenv("CI", "true", 1); else unsetenv("CI");
-  const auto file = std::filesystem::temp_directory_path() / "hs_progress_test.txt";
-  std::fflush(stderr);
   const int kept = dup(STDERR_FILENO);
-  std::FILE* sink = std::fopen(file.c_str(), "w");
   dup2(fileno(sink), STDERR_FILENO);
   body();
   std::fflush(stderr);

@@ -97,7 +97,7 @@ struct AaWallLink {
   std::size_t target;        // written: the slot x + c_i pulls f_-i from
   double a, b, c, d, e;      // as WallLink
   std::ptrdiff_t odd_slot;   // as WallLink::odd_slot
-  bool odd_negated;          // i > 9: the link's own odd part is its pair's, negated
+  bool odd_negated;          // i > D3Q19::half: the link's own odd part is its pair's, negated
 };
 
 /// The links in `layout`'s slots, in the same order.

@@ -279,6 +279,7 @@ void FluidLattice::add_force(int x, int y, int z, const common::Vec3& f_lu) {
 
 void FluidLattice::restore_raw_populations(std::span<const double> f, long steps) {
   if (f.size() != src_.size()) throw std::invalid_argument("restore_raw_populations: the checkpoint is of another lattice");
+  if (steps < 0) throw std::invalid_argument("restore_raw_populations: a negative step count (a damaged checkpoint)");
   std::copy(f.begin(), f.end(), src_.begin());
   steps_ = steps;
 }

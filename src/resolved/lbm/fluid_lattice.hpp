@@ -193,7 +193,7 @@ class FluidLattice {
   std::vector<FluidRun> runs_;
   std::size_t fluid_nodes_ = 0;
   std::vector<WallLink> links_;
-  /// AA: links_ resolved for the swapped [0] and the natural [1] layout, i.e. for after an odd and an even step.
+  /// AA: links_ resolved for the swapped layout [0] (steps_done() even) and the natural one [1] (steps_done() odd).
   std::array<std::vector<AaWallLink>, 2> aa_links_;
   /// AA: the pre-collision odd parts of the nodes with Bouzidi links, kept by the kernel (AaStreamCollideArgs::odd_parts):
   /// odd_part_nodes_ entries per pair.
