@@ -14,12 +14,14 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "campaign/case_template.hpp"
 #include "campaign/dataset_writer.hpp"
+#include "campaign/invocation_log.hpp"
 #include "common/errors.hpp"
 #include "common/io/checkpoint.hpp"
 #include "common/progress.hpp"
@@ -129,6 +131,12 @@ std::string CampaignRunner::status_table() const {
   const int left = count[RunState::running] + count[RunState::resumable] + count[RunState::pending];
   out += fmt::format("wall time of the runs so far {} ({} thread{} per run)", common::Progress::format_duration(wall_total),
                      spec_.threads_per_job, spec_.threads_per_job == 1 ? "" : "s");
+  const InvocationTotals campaign = read_invocation_totals(spec_.dir / "runs" / "invocations.json");
+  if (campaign.invocations > 0) {
+    out += fmt::format("; of the campaign {} over {} invocation{} (runs/invocations.json)",
+                       common::Progress::format_duration(campaign.wall_s), campaign.invocations,
+                       campaign.invocations == 1 ? "" : "s");
+  }
   if (count[RunState::done] > 0 && left > 0) {
     // A rough guide: runs differ (longer periods at small r*, more steps at small Re) and part-done ones count whole.
     const double mean = wall_done / count[RunState::done];
@@ -165,6 +173,9 @@ int CampaignRunner::run() {
   common::Progress progress(fmt::format("campaign {}", spec_.name), static_cast<long>(queue.size()), options_.show_progress,
                             std::chrono::seconds(0));
   if (!queue.empty()) progress.update(0);   // the ETA counts from here (a finished campaign says nothing)
+  std::optional<InvocationLog> invocation;   // only an invocation that runs something is worth recording
+  if (!queue.empty()) invocation.emplace(spec_.dir / "runs" / "invocations.json");
+  auto last_touch = Clock::now();
   const common::StopRequestScope stop_requests;
   bool stop_forwarded = false;
   while (next < queue.size() || !running.empty()) {
@@ -190,6 +201,11 @@ int CampaignRunner::run() {
       stop_forwarded = true;
     }
     if (pid == 0 || (pid < 0 && errno == EINTR)) {
+      // Once a minute: a campaign killed without warning loses at most that much of its recorded wall time.
+      if (invocation && Clock::now() - last_touch > std::chrono::minutes(1)) {
+        invocation->touch(finished);
+        last_touch = Clock::now();
+      }
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
       continue;
     }
@@ -220,10 +236,12 @@ int CampaignRunner::run() {
                               common::Progress::format_duration(r.wall_s), r.reason.empty() ? "" : " (" + r.reason + ")"));
     // A run stopped on request or killed is not finished: the progress line (and its ETA) counts only those that are.
     if (r.state == RunState::done || r.state == RunState::failed) progress.update(++finished);
+    if (invocation) invocation->touch(finished);
     write_dataset(spec_, runs);
   }
   progress.finish();
   write_dataset(spec_, runs);
+  if (invocation) invocation->touch(finished);
   if (const int signal = common::stop_signal()) {
     throw common::RunInterrupted(fmt::format("campaign {} stopped by signal {}; its runs saved checkpoints, run the same "
                                              "command again to continue", spec_.name, signal), signal);

@@ -20,6 +20,7 @@
 
 #include "campaign/campaign_spec.hpp"
 #include "campaign/case_template.hpp"
+#include "campaign/invocation_log.hpp"
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
 
@@ -76,6 +77,11 @@ TEST(Campaign, RunsEveryPointOnceAndAssemblesTheDataset) {
   EXPECT_EQ(second.code, 0) << second.output;
   EXPECT_EQ(fs::last_write_time(dir / "runs" / "re-0.1" / "status.json"), mtime);
   EXPECT_NE(second.output.find("2 done"), std::string::npos) << second.output;
+  // The campaign's wall time: one invocation ran the two runs; the second, with nothing to do, is not recorded.
+  const auto totals = hs::campaign::read_invocation_totals(dir / "runs" / "invocations.json");
+  EXPECT_EQ(totals.invocations, 1);
+  EXPECT_GT(totals.wall_s, 0.0);
+  EXPECT_NE(second.output.find("over 1 invocation"), std::string::npos) << second.output;
 }
 
 TEST(Campaign, ReopenedRunsGoAgainAndLeaveTheDatasetUntilTheyFinish) {
