@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Copies what the repository keeps of each finished campaign run: summary.json and timeseries.csv thinned to at most
 # MAX_ROWS rows (every k-th sample, the last one always kept), gzip-compressed, under data/resolved/runs/<run>/.
-# The full outputs stay in the (git-ignored) campaign folder. Also prints the campaign's CPU and wall hours so far.
+# The full outputs stay in the (git-ignored) campaign folder. Also prints the campaign's CPU hours so far and the wall
+# hours its runs/invocations.json recorded.
 # Usage: /usr/bin/python3 tools/archive_campaign.py cases/campaign/tube-re-rstar data/resolved/runs
 import gzip
 import json
@@ -48,6 +49,12 @@ def main():
                 z.write("".join(thin(lines)).encode())
     # One thread per run: CPU hours = the runs' wall hours (failed and retried attempts included).
     print(f"{done} runs archived in {archive}; {wall / 3600:.2f} CPU hours of finished or failed runs so far")
+    invocations = os.path.join(runs, "invocations.json")
+    if os.path.exists(invocations):
+        with open(invocations) as f:
+            entries = json.load(f)
+        hours = sum(e.get("wall_s", 0.0) for e in entries) / 3600
+        print(f"campaign wall time recorded in {invocations}: {hours:.2f} h over {len(entries)} invocations")
 
 
 if __name__ == "__main__":
