@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <chrono>
@@ -75,6 +76,23 @@ std::string simulated_time(const RunRecord& r) {
   return fmt::format("{:.3g} s", std::strtod(last.c_str(), nullptr));
 }
 
+/// Wall seconds the runs not yet finished will take, roughly: the median wall time of the done runs (a run's own
+/// attempts added up) for each, in rounds of `jobs` at a time. Runs differ (longer periods at small r*, more steps
+/// at small Re) and part-done ones count whole. Negative when no run is done yet.
+double estimate_left_s(const std::vector<RunRecord>& runs, int jobs) {
+  std::vector<double> done;
+  int left = 0;
+  for (const auto& r : runs) {
+    if (r.state == RunState::done) done.push_back(r.wall_s);
+    if (r.state == RunState::pending || r.state == RunState::resumable || r.state == RunState::running) ++left;
+  }
+  if (done.empty()) return -1.0;
+  std::sort(done.begin(), done.end());
+  const std::size_t n = done.size();
+  const double median = n % 2 == 1 ? done[n / 2] : 0.5 * (done[n / 2 - 1] + done[n / 2]);
+  return median * std::ceil(static_cast<double>(left) / jobs);
+}
+
 /// The last line starting with "error:" or "numerical failure:" in the run's console output.
 std::string failure_reason(const RunRecord& r, int code) {
   std::ifstream in(r.console_file());
@@ -123,11 +141,7 @@ std::string CampaignRunner::status_table() const {
                      count[RunState::done], count[RunState::failed], count[RunState::running],
                      count[RunState::resumable], count[RunState::pending]);
   double wall_total = 0.0;
-  double wall_done = 0.0;
-  for (const auto& r : runs) {
-    wall_total += r.wall_s;
-    if (r.state == RunState::done) wall_done += r.wall_s;
-  }
+  for (const auto& r : runs) wall_total += r.wall_s;
   const int left = count[RunState::running] + count[RunState::resumable] + count[RunState::pending];
   out += fmt::format("wall time of the runs so far {} ({} thread{} per run)", common::Progress::format_duration(wall_total),
                      spec_.threads_per_job, spec_.threads_per_job == 1 ? "" : "s");
@@ -137,13 +151,10 @@ std::string CampaignRunner::status_table() const {
                        common::Progress::format_duration(campaign.wall_s), campaign.invocations,
                        campaign.invocations == 1 ? "" : "s");
   }
-  if (count[RunState::done] > 0 && left > 0) {
-    // A rough guide: runs differ (longer periods at small r*, more steps at small Re) and part-done ones count whole.
-    const double mean = wall_done / count[RunState::done];
-    const double rounds = std::ceil(static_cast<double>(left) / spec_.jobs);
-    out += fmt::format("; at the finished runs' mean of {} each, {} left take about {} at {} at a time",
-                       common::Progress::format_duration(mean), left, common::Progress::format_duration(mean * rounds),
-                       spec_.jobs);
+  const double estimate = estimate_left_s(runs, spec_.jobs);
+  if (estimate >= 0.0 && left > 0) {
+    out += fmt::format("; {} left, roughly {} at {} at a time (the done runs' median each)", left,
+                       common::Progress::format_duration(estimate), spec_.jobs);
   }
   out += "\n";
   return out;
@@ -172,7 +183,8 @@ int CampaignRunner::run() {
   // Runs take minutes to hours: in a log every finished run is worth a line.
   common::Progress progress(fmt::format("campaign {}", spec_.name), static_cast<long>(queue.size()), options_.show_progress,
                             std::chrono::seconds(0));
-  if (!queue.empty()) progress.update(0);   // the ETA counts from here (a finished campaign says nothing)
+  progress.set_eta_estimate([&](long) { return estimate_left_s(runs, spec_.jobs); });
+  if (!queue.empty()) progress.update(0);   // a finished campaign says nothing
   std::optional<InvocationLog> invocation;   // only an invocation that runs something is worth recording
   if (!queue.empty()) invocation.emplace(spec_.dir / "runs" / "invocations.json");
   auto last_touch = Clock::now();

@@ -47,7 +47,10 @@ std::string Progress::status_text(long done) const {
   const double fraction = total_ > 0 ? static_cast<double>(done) / static_cast<double>(total_) : 1.0;
   const long progressed = done - first_done_;   // a resumed run estimates from where it restarted
   std::string eta = "--";
-  if (progressed > 0) {
+  if (eta_estimate_) {
+    const double left = eta_estimate_(done);
+    if (left >= 0.0) eta = format_duration(left);
+  } else if (progressed > 0) {
     eta = format_duration(elapsed * static_cast<double>(total_ - done) / static_cast<double>(progressed));
   }
   return fmt::format("{} {:5.1f}%  {}/{}  elapsed {}  ETA {}", label_, 100.0 * fraction, done, total_,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace hs::common {
@@ -20,6 +21,9 @@ class Progress {
 
   /// Call often. `done` counts from 0 to total.
   void update(long done);
+  /// The seconds left as the caller estimates them, in place of the rate since the start (which misleads when the
+  /// units differ in size or were part-done before: a resumed campaign's runs). Negative: no estimate ("--").
+  void set_eta_estimate(std::function<double(long done)> seconds_left) { eta_estimate_ = std::move(seconds_left); }
   /// One line of news (a run finished), on its own line above the progress line; dated in a log.
   void note(const std::string& line);
   void finish();
@@ -39,6 +43,7 @@ class Progress {
   bool finished_ = false;
   bool line_open_ = false;     // terminal: a progress line is drawn and not yet ended
   std::chrono::seconds log_every_;
+  std::function<double(long)> eta_estimate_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_;
 };

@@ -93,3 +93,14 @@ TEST(Progress, SilentInCiAndWhenDisabled) {
             }, false),
             "");
 }
+
+TEST(Progress, TheCallersEstimateReplacesTheRateSinceTheStart) {
+  const std::string log = stderr_of([] {
+    hs::common::Progress p("campaign x", 10, true, std::chrono::seconds(0));
+    p.set_eta_estimate([](long done) { return done < 2 ? -1.0 : 3661.0; });
+    p.update(1);   // no estimate yet
+    p.update(2);
+  }, false);
+  EXPECT_NE(log.find("1/10  elapsed 0.0s  ETA --"), std::string::npos) << log;
+  EXPECT_NE(log.find("ETA 1h01m"), std::string::npos) << log;
+}
