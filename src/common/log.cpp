@@ -19,7 +19,9 @@ const char* tag(Log::Level level) {
   return "";
 }
 
-std::string timestamp() {
+}  // namespace
+
+std::string local_timestamp() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm tm{};
   localtime_r(&now, &tm);
@@ -27,8 +29,6 @@ std::string timestamp() {
   std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
   return buf;
 }
-
-}  // namespace
 
 Log::Log(int rank, Level threshold) : rank_(rank), threshold_(threshold) {}
 
@@ -46,7 +46,7 @@ void Log::write(Level level, const std::string& message) {
     }
   }
   if (file_.is_open()) {
-    file_ << timestamp() << ' ' << tag(level) << ": " << message << '\n';
+    file_ << local_timestamp() << ' ' << tag(level) << ": " << message << '\n';
     file_.flush();
   }
 }

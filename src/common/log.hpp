@@ -11,6 +11,9 @@
 
 namespace hs::common {
 
+/// Local wall-clock time, "2026-11-23 04:41:12", for lines a person reads later (log.txt, a campaign's log).
+std::string local_timestamp();
+
 class Log {
  public:
   enum class Level { debug, info, warning, error };

@@ -6,25 +6,16 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 
 #include <fmt/format.h>
+
+#include "common/log.hpp"
 
 namespace hs::common {
 
 namespace {
 
 bool in_ci() { return std::getenv("CI") != nullptr; }
-
-/// Local wall-clock time, "2026-11-23 04:41:12": a log read hours later needs to know when.
-std::string timestamp() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S", &local);
-  return text;
-}
 
 }  // namespace
 
@@ -69,7 +60,7 @@ void Progress::update(long done) {
   } else {
     const bool due = done != last_done_ && (now - last_draw_ >= log_every_ || done >= total_);
     if (!due) return;
-    std::fprintf(stderr, "%s  %s\n", timestamp().c_str(), status_text(done).c_str());
+    std::fprintf(stderr, "%s  %s\n", local_timestamp().c_str(), status_text(done).c_str());
     last_done_ = done;
   }
   last_draw_ = now;
@@ -83,7 +74,7 @@ void Progress::note(const std::string& line) {
     std::fprintf(stderr, "\r\033[K%s\n", line.c_str());
     line_open_ = false;
   } else {
-    std::fprintf(stderr, "%s  %s\n", timestamp().c_str(), line.c_str());
+    std::fprintf(stderr, "%s  %s\n", local_timestamp().c_str(), line.c_str());
   }
   std::fflush(stderr);
 }
@@ -94,7 +85,7 @@ void Progress::finish() {
   if (mode_ == Mode::terminal && line_open_) std::fprintf(stderr, "\n");
   // A log ends with where the run stopped (it may stop before its total: settled, interrupted).
   if (mode_ == Mode::log && latest_done_ >= 0 && latest_done_ != last_done_) {
-    std::fprintf(stderr, "%s  %s\n", timestamp().c_str(), status_text(latest_done_).c_str());
+    std::fprintf(stderr, "%s  %s\n", local_timestamp().c_str(), status_text(latest_done_).c_str());
   }
   std::fflush(stderr);
 }
