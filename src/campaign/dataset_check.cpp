@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -28,12 +27,6 @@ void widen(Range& r, double v, bool& first) {
   first = false;
 }
 
-std::string trimmed(const std::string& text) {
-  const auto begin = text.find_first_not_of(" \t\r");
-  if (begin == std::string::npos) return "";
-  return text.substr(begin, text.find_last_not_of(" \t\r") - begin + 1);
-}
-
 /// Rows whose `settled` or `cd_settled` cell reads "false" (text columns, which read_csv gives as NaN).
 int count_unsettled(const std::filesystem::path& csv) {
   std::ifstream in(csv);
@@ -43,9 +36,7 @@ int count_unsettled(const std::filesystem::path& csv) {
   bool header = true;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream cells_in(line);
-    for (std::string cell; std::getline(cells_in, cell, ',');) cells.push_back(trimmed(cell));
+    const std::vector<std::string> cells = common::split_csv_line(line);
     if (header) {
       for (std::size_t c = 0; c < cells.size(); ++c) {
         if (cells[c] == "settled" || cells[c] == "cd_settled") flags.push_back(static_cast<int>(c));
@@ -75,10 +66,8 @@ void read_published_ranges(const std::filesystem::path& file, DatasetExpectation
   bool gamma = false;
   bool re_p = false;
   for (std::string line; std::getline(in, line);) {
-    if (trimmed(line).empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream cells_in(line);
-    for (std::string cell; std::getline(cells_in, cell, ',');) cells.push_back(trimmed(cell));
+    if (line.find_first_not_of(" \r") == std::string::npos || line[0] == '#') continue;
+    const std::vector<std::string> cells = common::split_csv_line(line);
     if (header) {
       if (cells != std::vector<std::string>{"quantity", "min", "max"}) break;
       header = false;

@@ -51,30 +51,31 @@ std::vector<double> CsvTable::column(const std::string& name) const {
   return out;
 }
 
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) {
+    while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
+    while (!cell.empty() && cell.front() == ' ') cell.erase(cell.begin());
+    cells.push_back(cell);
+  }
+  return cells;
+}
+
 CsvTable read_csv(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw ConfigError(fmt::format("{}: cannot read CSV file", file.string()));
   CsvTable t;
   std::string line;
-  auto split = [](const std::string& s) {
-    std::vector<std::string> cells;
-    std::stringstream ss(s);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) {
-      while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
-      while (!cell.empty() && cell.front() == ' ') cell.erase(cell.begin());
-      cells.push_back(cell);
-    }
-    return cells;
-  };
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     if (t.columns.empty()) {
-      t.columns = split(line);
+      t.columns = split_csv_line(line);
       continue;
     }
     std::vector<double> row;
-    for (const auto& cell : split(line)) {
+    for (const auto& cell : split_csv_line(line)) {
       char* end = nullptr;
       const double v = std::strtod(cell.c_str(), &end);
       row.push_back(end != cell.c_str() && *end == '\0' ? v : std::numeric_limits<double>::quiet_NaN());

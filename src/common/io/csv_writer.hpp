@@ -29,6 +29,8 @@ struct CsvTable {
   [[nodiscard]] int column_index(const std::string& name) const;   // -1 when absent
   [[nodiscard]] std::vector<double> column(const std::string& name) const;
 };
+/// The comma-separated cells of one line, spaces and a trailing '\r' trimmed (no quoting: the project's CSVs have none).
+std::vector<std::string> split_csv_line(const std::string& line);
 /// Reads a CSV with a header line; lines starting with '#' are comments. Throws ConfigError on an unreadable file.
 CsvTable read_csv(const std::filesystem::path& file);
 
