@@ -86,6 +86,8 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   } catch (const hs::common::ConfigError& e) {
     coupling.fail("wall_correction", e.what());
   }
+  // Off by default: it needs d_p <= dx, i.e. a coarse grid in a narrow tube (self_mobility.hpp).
+  c.self_induced_correction = coupling.boolean_or("self_induced_correction", false);
   c.cells_across = static_cast<int>(numerics.integer_in("cells_across_diameter", 4, 1000));
   c.dt_s = numerics.positive("dt_s");
   c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
@@ -97,6 +99,11 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   const double along = c.length_m / dx;
   if (std::abs(along - std::round(along)) > 1e-6 * along) {
     geometry.fail("length_m", fmt::format("must be a whole number of cells of {:.6g} m (it is {:.4f})", dx, along));
+  }
+  if (c.self_induced_correction && c.particles.diameter_m > dx) {
+    coupling.fail("self_induced_correction", fmt::format("needs spheres no larger than a cell, but d_p = {:.4g} m > dx = {:.4g} m; "
+                                                         "use cells_across_diameter <= {}", c.particles.diameter_m, dx,
+                                                         static_cast<int>(std::floor(c.diameter_m / c.particles.diameter_m))));
   }
   const double r = 0.5 * c.diameter_m;
   const double u_max = -c.pressure_gradient_Pa_m * r * r / (4.0 * c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s);
@@ -248,7 +255,8 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   const double u_plasma = q_plasma / (std::numbers::pi * r_tube * r_tube);
   CfdDemCoupling coupling(fluid, dem,
                           {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0},
-                           .tube_radius_m = r_tube, .wall_correction = c.wall_correction},
+                           .tube_radius_m = r_tube, .wall_correction = c.wall_correction,
+                           .self_induced_correction = c.self_induced_correction},
                           make_closures(c));
   TubePriesState st;
   if (restart.resume) {
@@ -323,6 +331,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   j["lift"] = c.lift.model == "expression" ? c.lift.file.string() : c.lift.model;
   j["deformation"] = c.deformation.model == "expression" ? c.deformation.file.string() : c.deformation.model;
   j["wall_correction"] = hs::closures::wall_correction_name(c.wall_correction);
+  j["self_induced_correction"] = c.self_induced_correction;
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c.fluid.density_kg_m3, c.diameter_m, 2.0 * u_blood, mu)},
                  {"wall_gamma_plus", hs::common::shear_rate_plus(wall_shear_rate, r_tube, c.fluid.kinematic_viscosity_m2_s)},
                  {"confinement_d_over_D", c.particles.diameter_m / c.diameter_m},

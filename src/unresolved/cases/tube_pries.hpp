@@ -33,6 +33,7 @@ struct TubePriesConfig {
   bool void_fraction_rate = false;       // d(eps)/dt source (see CouplingSettings::void_fraction_rate)
   hs::closures::ClosureSpec drag{}, lift{}, deformation{};   // model "none": no lift / DI = 0
   hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;   // confinement factor on the drag
+  bool self_induced_correction = false;  // closures get u_f - M F (CouplingSettings::self_induced_correction)
   double checkpoint_every_wall_s = 600.0;   // wall-clock interval between restart files (and one at the end)
   std::uint64_t seed = 1;
 };

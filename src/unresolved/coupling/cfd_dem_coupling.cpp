@@ -35,18 +35,6 @@ double shear_rate(const std::array<Vec3, 3>& g) {
   return std::sqrt(2.0 * s2);
 }
 
-/// The solver fills the ghosts of eps and Ksl itself, not those of Us and f, which its face averages read.
-template <typename T>
-void fill_ghosts(const FvmGrid& grid, BlockField<T>& field) {
-  for (int a = 0; a < 3; ++a) {
-    if (grid.periodic(a)) {
-      field.fill_periodic(a, grid.cells()[static_cast<std::size_t>(a)]);
-    } else {
-      field.fill_zero_gradient(a);
-    }
-  }
-}
-
 }  // namespace
 
 CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSettings settings, CouplingClosures closures)
@@ -58,6 +46,26 @@ CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSetting
     throw hs::common::ConfigError(fmt::format("coupling: dt_CFD / dt_DEM = {:.6g} must equal n_coupling = {}",
                                               ratio, settings_.n_coupling));
   }
+  if (settings_.self_induced_correction && !(settings_.tube_radius_m > 0.0)) {
+    throw hs::common::ConfigError("coupling: the self-induced velocity correction needs the tube radius (tube_radius_m > 0)");
+  }
+}
+
+const SelfMobility& CfdDemCoupling::self_mobility(double diameter_m) {
+  for (const SelfMobility& m : self_mobility_) {
+    if (std::abs(m.sphere_diameter_m() - diameter_m) <= 1e-9 * diameter_m) return m;
+  }
+  const double ratio = diameter_m / fluid_.grid().dx_m();
+  if (ratio > 1.0) {
+    throw hs::common::ConfigError(fmt::format(
+        "coupling: the self-induced velocity correction needs spheres no larger than a cell, but d_p / dx = {:.3g} "
+        "(d_p = {:.4g} m, dx = {:.4g} m): use a coarser grid or switch the correction off (self_mobility.hpp)",
+        ratio, diameter_m, fluid_.grid().dx_m()));
+  }
+  return self_mobility_.emplace_back(fluid_.grid(), fluid_.fluid(), fluid_.drive(),
+                                     TubeFrame{.axis = settings_.axis, .axis_point_m = settings_.axis_point_m,
+                                               .radius_m = settings_.tube_radius_m},
+                                     diameter_m, settings_.void_fraction_feedback ? settings_.eps_min : 0.0);
 }
 
 Vec3 CfdDemCoupling::radial_unit(const Vec3& x) const {
@@ -94,19 +102,28 @@ void CfdDemCoupling::particle_forces() {
   auto& beta = p.drag_coefficient_N_s_m();
   auto& uf_col = p.fluid_velocity_m_s();
   auto& di = p.deformation_index();
+  auto& lift_col = p.lift_force_N();
+  const bool correct = settings_.self_induced_correction && settings_.two_way;
+  const double dt = fluid_.settings().dt_s;
   lift_reaction_N_.fill(Vec3{});
   map_.locate(p);
   const BlockField<double>& eps = fluid_.void_fraction();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x = particle_position(p, i);
-    const Vec3 uf = fluid_.velocity_at(x);
+    const double d = 2.0 * p.radius_m()[i];
+    Vec3 uf = fluid_.velocity_at(x);
+    if (correct) {
+      // What this sphere gave the fluid in the step just made: minus its drag impulse per time, minus its lift.
+      const Vec3 j{p.drag_impulse_N_s()[0][i], p.drag_impulse_N_s()[1][i], p.drag_impulse_N_s()[2][i]};
+      const Vec3 lift_before{lift_col[0][i], lift_col[1][i], lift_col[2][i]};
+      uf = uf - self_mobility(d).induced_velocity(x, -1.0 * (j / dt + lift_before));
+    }
     const auto grad = fluid_.velocity_gradient_at(x);
     hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)]);
     // DI = (L - B)/(L + B) lies in [0, 1) by definition; a learned DI evaluated outside its training range can
     // leave it (e.g. u_r+ > 0 in a transient), and a negative DI then fed back into C_d(DI) runs away.
     if (closures_.deformation) in.di = std::clamp(closures_.deformation->deformation_index(in), 0.0, 0.999);
     di[i] = in.di;
-    const double d = 2.0 * p.radius_m()[i];
     const double vp = std::numbers::pi / 6.0 * d * d * d;
     const double k_wall = hs::closures::wall_correction_factor(settings_.wall_correction, d, 2.0 * settings_.tube_radius_m);
     beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in) * k_wall;
@@ -116,6 +133,7 @@ void CfdDemCoupling::particle_forces() {
                                                    beta[i], in.re_p, in.di, in.gamma_plus, in.u_r_plus));
     }
     Vec3 f{};
+    Vec3 lift{};
     if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
     if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
     if (closures_.lift) {
@@ -124,13 +142,14 @@ void CfdDemCoupling::particle_forces() {
       const double ur = flow ? norm(uf) : norm(uf - particle_velocity(p, i));
       hs::closures::LiftInputs lift_in = in;
       if (flow) lift_in.re_p = hs::common::particle_reynolds(d, ur, fluid_.fluid().kinematic_viscosity_m2_s);
-      const Vec3 lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * radial_unit(x);
+      lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * radial_unit(x);
       f = f + lift;
       for (int m = 0; m < kMarkersPerSphere; ++m) lift_reaction_N_[map_.cell(i, m)] -= lift / kMarkersPerSphere;
     }
     for (int a = 0; a < 3; ++a) {
       ext[static_cast<std::size_t>(a)][i] = f[a];
       uf_col[static_cast<std::size_t>(a)][i] = uf[a];
+      lift_col[static_cast<std::size_t>(a)][i] = lift[a];
     }
   }
 }
@@ -168,7 +187,7 @@ void CfdDemCoupling::fill_fields() {
   for (std::size_t c = 0; c < weight.data().size(); ++c) {
     if (weight[c] > 0.0) us[c] = us[c] / weight[c];
   }
-  fill_ghosts(fluid_.grid(), us);
+  fill_cell_field_ghosts(fluid_.grid(), us);
   if (refresh && settings_.fluid_drag == FluidDrag::implicit && settings_.two_way) {
     fluid_.implicit_coefficient_kg_m3_s() = ksl;
   }
@@ -225,7 +244,7 @@ void CfdDemCoupling::step() {
   for (int s = 0; s < settings_.n_coupling; ++s) dem_.step();
   fill_fields();
   if (settings_.two_way) exchange_drag();
-  fill_ghosts(fluid_.grid(), fluid_.explicit_force_density_N_m3());
+  fill_cell_field_ghosts(fluid_.grid(), fluid_.explicit_force_density_N_m3());
   fluid_.step();
   stats_.received_by_fluid_N_s = received_by_fluid_N_s();
   if (settings_.two_way) stats_.pending_N_s += stats_.received_by_fluid_N_s + stats_.drag_impulse_particles_N_s;

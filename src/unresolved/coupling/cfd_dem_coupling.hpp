@@ -11,6 +11,7 @@
 #include "closures/wall_correction.hpp"
 #include "common/vec3.hpp"
 #include "unresolved/coupling/divided_void_fraction.hpp"
+#include "unresolved/coupling/self_mobility.hpp"
 #include "unresolved/dem/dem_system.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
 
@@ -47,6 +48,10 @@ struct CouplingSettings {
   // Confinement factor K(d_p / 2 R_c) on every particle's drag (closures/wall_correction.hpp): the closures
   // describe an unbounded sphere; haberman_sayre makes them the on-axis drag in the tube of radius tube_radius_m.
   hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;
+  // true: the closures get the undisturbed velocity estimate u_f - M F instead of the interpolated u_f, with F the
+  // force each sphere gave the fluid in the last step (drag and lift) and M the grid's self-mobility measured on
+  // this tube (self_mobility.hpp). Two-way coupling only; needs tube_radius_m and spheres no larger than a cell.
+  bool self_induced_correction = false;
 };
 
 /// Closures by role; drag is required, lift and deformation may be null (no lift, DI = 0).
@@ -100,6 +105,8 @@ class CfdDemCoupling {
   [[nodiscard]] hs::closures::ClosureInputs inputs(std::size_t i, const hs::common::Vec3& uf,
                                                     const std::array<hs::common::Vec3, 3>& grad, double local_ht) const;
   [[nodiscard]] hs::common::Vec3 radial_unit(const hs::common::Vec3& x) const;
+  /// The self-mobility table for spheres of this diameter, measured on first use; ConfigError for d_p > dx.
+  [[nodiscard]] const SelfMobility& self_mobility(double diameter_m);
 
   FvmSolver& fluid_;
   DemSystem& dem_;
@@ -111,6 +118,7 @@ class CfdDemCoupling {
   ExchangeStats stats_;
   double mean_velocity_m_s_ = 0.0;
   long steps_ = 0;
+  std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
 };
 
 }  // namespace hs::unresolved

@@ -18,14 +18,14 @@
 namespace hs::unresolved {
 namespace {
 
-constexpr std::array<char, 8> magic = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '1'};
+constexpr std::array<char, 8> magic = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '2'};   // 2: with the lift column
 
 /// The columns in file order; the same list for writing and reading.
 template <typename Store, typename F>
 void for_each_saved_column(Store& p, F&& f) {
   for (auto* v3 : {&p.position_m(), &p.velocity_m_s(), &p.angular_velocity_rad_s(), &p.force_N(), &p.torque_Nm(),
                    &p.external_force_N(), &p.external_torque_Nm(), &p.fluid_velocity_m_s(), &p.drag_impulse_N_s(),
-                   &p.wall_shear_m()}) {
+                   &p.lift_force_N(), &p.wall_shear_m()}) {
     for (auto& c : *v3) f(c);
   }
   for (auto* c : {&p.radius_m(), &p.mass_kg(), &p.drag_coefficient_N_s_m(), &p.deformation_index()}) f(*c);
@@ -66,7 +66,7 @@ void read_dem_checkpoint(DemSystem& dem, const std::filesystem::path& file) {
   std::array<char, 8> head{};
   if (!in) throw hs::common::ConfigError(fmt::format("{}: cannot open the DEM checkpoint", file.string()));
   get(in, head.data(), head.size(), file);
-  if (head != magic) throw hs::common::ConfigError(fmt::format("{}: not a hemoscale DEM checkpoint", file.string()));
+  if (head != magic) throw hs::common::ConfigError(fmt::format("{}: not a hemoscale DEM checkpoint of this version", file.string()));
   std::uint64_t counts[2] = {0, 0};
   get(in, counts, 2, file);
   ParticleStore& p = dem.particles();

@@ -25,7 +25,7 @@ struct ParticleState {
 /// [n_owned(), size()) are ghosts: copies of particles (periodic images here, particles of neighbour blocks
 /// once the run is distributed) that only take part in contacts. A ghost carries its owner's id; forces
 /// computed on a ghost are added back to its owner by fold_ghost_forces() (the reverse halo exchange).
-/// Per-particle coupling data (external force, drag coefficient, fluid velocity, drag impulse, DI) and the
+/// Per-particle coupling data (external force, drag coefficient, fluid velocity, drag impulse, lift, DI) and the
 /// wall-contact history live here too, so that sorting and (later) migration carry them along.
 class ParticleStore {
  public:
@@ -71,6 +71,8 @@ class ParticleStore {
   Vec3Columns& fluid_velocity_m_s() { return fluid_vel_; }
   /// Drag impulse (N s) given to each particle since the coupling last zeroed it: the fluid gets minus this.
   Vec3Columns& drag_impulse_N_s() { return drag_impulse_; }
+  /// Lift force of the current coupling step (N, part of the external force): the fluid gets minus this.
+  Vec3Columns& lift_force_N() { return lift_; }
   /// Deformation index DI of the RBC each sphere stands for (set by the coupling's closures; output only).
   Column& deformation_index() { return di_; }
   /// Tangential spring of the particle-wall contact (m), zero when not touching the wall.
@@ -80,6 +82,7 @@ class ParticleStore {
   const Column& drag_coefficient_N_s_m() const { return drag_beta_; }
   const Vec3Columns& fluid_velocity_m_s() const { return fluid_vel_; }
   const Vec3Columns& drag_impulse_N_s() const { return drag_impulse_; }
+  const Vec3Columns& lift_force_N() const { return lift_; }
   const Column& deformation_index() const { return di_; }
   const Vec3Columns& wall_shear_m() const { return wall_shear_; }
 
@@ -107,7 +110,7 @@ class ParticleStore {
   Vec3Columns pos_, vel_, omega_, force_, torque_;
   Column radius_, mass_;
   std::vector<std::int64_t> id_;
-  Vec3Columns ext_force_, ext_torque_, fluid_vel_, drag_impulse_, wall_shear_;
+  Vec3Columns ext_force_, ext_torque_, fluid_vel_, drag_impulse_, lift_, wall_shear_;
   Column drag_beta_, di_;
   std::vector<std::size_t> ghost_owner_;
   std::vector<hs::common::Vec3> ghost_shift_;

@@ -106,4 +106,17 @@ class FvmGrid {
   BlockField<double> fluid_fraction_;
 };
 
+/// Fills the ghost layer of a cell-centred field that the coupling sets (Us, f; the solver fills those of eps and
+/// Ksl itself): periodic wrap along periodic axes, zero gradient along the others.
+template <typename T>
+void fill_cell_field_ghosts(const FvmGrid& grid, BlockField<T>& field) {
+  for (int a = 0; a < 3; ++a) {
+    if (grid.periodic(a)) {
+      field.fill_periodic(a, grid.cells()[static_cast<std::size_t>(a)]);
+    } else {
+      field.fill_zero_gradient(a);
+    }
+  }
+}
+
 }  // namespace hs::unresolved

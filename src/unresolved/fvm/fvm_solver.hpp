@@ -71,6 +71,7 @@ class FvmSolver {
   [[nodiscard]] const FvmGrid& grid() const { return grid_; }
   [[nodiscard]] const PisoSettings& settings() const { return piso_; }
   [[nodiscard]] const FluidProperties& fluid() const { return fluid_; }
+  [[nodiscard]] const FlowDrive& drive() const { return drive_; }
 
   // ---- Fields the coupling fills (cell-centred, index (i, j, k) of FvmGrid cells). Call
   // coupling_fields_changed() after writing eps or Ksl, so the pressure matrix is rebuilt. ----

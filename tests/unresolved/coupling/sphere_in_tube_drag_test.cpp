@@ -10,6 +10,7 @@
 
 #include "closures/register_builtin.hpp"
 #include "closures/wall_correction.hpp"
+#include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
 #include "periodic_tube.hpp"
@@ -40,12 +41,12 @@ struct DragRun {
 /// are off: they are separate terms of the split, the drag is what is compared. Re_p = d U / nu ~ 5e-4: Stokes
 /// drag (Schiller-Naumann would add 0.08%). No d(eps)/dt source: without a smoothing model its marker-crossing
 /// spikes make this single-sphere run oscillate (CouplingSettings::void_fraction_rate).
-DragRun drag_on_axis(double diameter_m, bool two_way) {
+DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, int cells_across = 10) {
   const double u0 = 1e-4;
   const double length = 2.0 * diameter_m;
   const double r = 0.5 * diameter_m;
   const hs::common::Tube tube = test::tube_along_z(diameter_m, length);
-  const FvmGrid grid = test::periodic_tube_grid(tube, diameter_m, length);
+  const FvmGrid grid = test::periodic_tube_grid(tube, diameter_m, length, cells_across);
   // dt = 1e-5 s (1/20 of R^2 / nu at D = 30 um, above the particle relaxation time m / beta = 1.2 us, which the
   // DEM integrates exactly); 50 steps = 2.6 R^2 / nu at D = 30 um: the disturbance near the sphere (dx^2 / nu =
   // 7.5 us) is settled.
@@ -66,7 +67,8 @@ DragRun drag_on_axis(double diameter_m, bool two_way) {
   CfdDemCoupling coupling(fluid, dem,
                           {.n_coupling = 100, .void_fraction_feedback = two_way, .two_way = two_way, .void_fraction_rate = false,
                            .pressure_force = false, .viscous_force = false, .axis = 2, .axis_point_m = {0, 0, 0},
-                           .tube_radius_m = r, .wall_correction = WallCorrection::haberman_sayre},
+                           .tube_radius_m = r, .wall_correction = WallCorrection::haberman_sayre,
+                           .self_induced_correction = corrected},
                           std::move(closures));
   const ParticleStore& p = dem.particles();
   DragRun mean{};
@@ -81,7 +83,7 @@ DragRun drag_on_axis(double diameter_m, bool two_way) {
     mean.velocity_m_s += u / kAveraged;
   }
   std::printf("D = %3.0f um, %s coupling: U = %.5e m/s (U0 = %.0e), drag / (3 pi mu d_p U K_HS) = %.5f, u_f / U = %.4f\n",
-              diameter_m * 1e6, two_way ? "two-way" : "one-way", mean.velocity_m_s, u0, mean.force_ratio, mean.fluid_ratio);
+              diameter_m * 1e6, two_way ? (corrected ? "two-way corrected" : "two-way") : "one-way", mean.velocity_m_s, u0, mean.force_ratio, mean.fluid_ratio);
   return mean;
 }
 
@@ -112,6 +114,24 @@ TEST(SphereInTube, TwoWayCouplingSlowsTheFluidTheClosureSees) {
     EXPECT_LT(run->fluid_ratio, 1.0);
   }
   EXPECT_GT(fine.fluid_ratio, coarse.fluid_ratio);
+}
+
+TEST(SphereInTube, SelfInducedCorrectionRestoresTheDragLawInTwoWayCoupling) {
+  // With the correction the closure gets u_f - M F, F the force the sphere gave the fluid in the last step and M the
+  // grid's measured self-mobility: the sphere's own disturbance is taken out, so the two-way drag must match the
+  // one-way drag law again. Same 3% band as the one-way test (issue 7's acceptance of the drag law); what is left is
+  // M measured at one position in a cell (it varies +-20% with the sphere's position in the cell). D = 100 um,
+  // 10 cells across: d_p / dx = 0.56 (at d_p / dx = 0.94, D = 30 um with 5 cells across, it over-corrects by 13%).
+  const DragRun run = drag_on_axis(100e-6, true, true);
+  EXPECT_NEAR(run.force_ratio, 1.0, 0.03);
+  EXPECT_NEAR(run.velocity_m_s, 1e-4, 0.03 * 1e-4);
+  EXPECT_LT(std::abs(run.fluid_ratio), 0.03);   // the estimate of the undisturbed velocity, 0 here
+}
+
+TEST(SphereInTube, SelfInducedCorrectionRefusesAGridFinerThanTheSphere) {
+  // D = 30 um, 10 cells across: d_p / dx = 1.9, beta M = 1.2-4.6 with the sphere's own void fraction: the lagged
+  // correction runs away with the fluid it drags (measured without the check: U = 60 U0 after 50 steps).
+  EXPECT_THROW((void)drag_on_axis(30e-6, true, true), hs::common::ConfigError);
 }
 
 }  // namespace
