@@ -30,7 +30,7 @@ fs::path write(const std::string& name, const std::string& text) {
 TEST(FitCli, FitsTheLiftCaseAndTheClosureChecksClean) {
   const fs::path out = fs::temp_directory_path() / "hs_fit_cli_lift";
   fs::remove_all(out);
-  const auto fit = run("fit " + std::string(HS_SOURCE_DIR) + "/cases/regression/lift_coefficient/fit.toml --no-plot -q -o " +
+  const auto fit = run("fit " + std::string(HS_SOURCE_DIR) + "/cases/regression/synthetic/lift_coefficient/fit.toml --no-plot -q -o " +
                        out.string());
   ASSERT_EQ(fit.code, 0) << fit.output;
   const auto check = run("fit --check " + (out / "cl_di_rep.toml").string());

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The three closure fits of cases/regression recover the known formulas of the synthetic dataset, and the
+// The three closure fits of cases/regression/synthetic recover the known formulas of the synthetic dataset, and the
 // closure files they write load back as closures that evaluate those formulas.
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ namespace hc = hs::closures;
 
 namespace {
 
-const fs::path cases = fs::path(HS_SOURCE_DIR) / "cases/regression";
+const fs::path cases = fs::path(HS_SOURCE_DIR) / "cases/regression/synthetic";
 
 // The formulas of tools/make_synthetic_dataset.py.
 double di_truth(const hc::ClosureInputs& in) { return 0.6 * in.gamma_plus / (0.08 + in.gamma_plus) - 0.3 * in.u_r_plus; }
