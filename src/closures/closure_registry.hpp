@@ -15,10 +15,18 @@
 
 namespace hs::closures {
 
+/// What a learned closure does with inputs outside its validity box (the counts report them either way).
+/// clamp: evaluates at the nearest point of the box, because a fitted formula is only known there and can turn
+/// unphysical just outside it (the resolved-dataset DI(gamma+, u_r+) goes negative at the slip of a cell inserted
+/// at rest); for drag the correction C_d Re_p / 24 is what is held (ExpressionDrag). extrapolate: the formula as
+/// it is.
+enum class OutsideValidity { clamp, extrapolate };
+
 /// What a case file says about one closure: `[coupling.drag] model = "expression"  file = "cd.toml"`.
 struct ClosureSpec {
   std::string model;
   std::filesystem::path file;   // closure file, for model = "expression" (absolute)
+  OutsideValidity outside = OutsideValidity::clamp;   // learned closures only
 };
 
 /// Reads `model` and, when present, `file` (relative to the case file) from a case-file section.

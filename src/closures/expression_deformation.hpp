@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "closures/deformation_closure.hpp"
+#include "closures/closure_registry.hpp"
 #include "closures/learned_formula.hpp"
 
 namespace hs::closures {
@@ -13,7 +14,8 @@ namespace hs::closures {
 class ExpressionDeformation final : public DeformationClosure {
  public:
   /// Loads and compiles the closure file; ConfigError for a bad file or a kind other than "deformation".
-  explicit ExpressionDeformation(const std::filesystem::path& file) : ExpressionDeformation(std::make_unique<LearnedFormula>(file, "deformation")) {}
+  explicit ExpressionDeformation(const std::filesystem::path& file, OutsideValidity outside = OutsideValidity::clamp)
+      : ExpressionDeformation(std::make_unique<LearnedFormula>(file, "deformation", outside)) {}
   [[nodiscard]] const ClosureFile& file() const { return formula_->file(); }
 
  private:

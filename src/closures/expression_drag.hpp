@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "closures/drag_closure.hpp"
+#include "closures/closure_registry.hpp"
 #include "closures/learned_formula.hpp"
 
 namespace hs::closures {
@@ -13,13 +14,20 @@ namespace hs::closures {
 class ExpressionDrag final : public DragClosure {
  public:
   /// Loads and compiles the closure file; ConfigError for a bad file or a kind other than "drag".
-  explicit ExpressionDrag(const std::filesystem::path& file) : ExpressionDrag(std::make_unique<LearnedFormula>(file, "drag")) {}
+  explicit ExpressionDrag(const std::filesystem::path& file, OutsideValidity outside = OutsideValidity::clamp)
+      : ExpressionDrag(std::make_unique<LearnedFormula>(file, "drag", outside)) {}
   [[nodiscard]] const ClosureFile& file() const { return formula_->file(); }
 
  private:
   explicit ExpressionDrag(std::unique_ptr<LearnedFormula> f)
       : DragClosure(f->file().name, f->validity()), formula_(std::move(f)) {}
   [[nodiscard]] double compute_drag_coefficient(const DragInputs& in) const override { return (*formula_)(in); }
+  /// Clamped, Re_p in C_d Re_p / 24 is clamped too: the correction keeps its edge value, so a Stokes-like drag
+  /// stays linear in the slip below the box instead of vanishing with Re_p.
+  [[nodiscard]] double compute_correction(const DragInputs& in) const override {
+    const DragInputs c = formula_->clamped(in);
+    return (*formula_)(c) * c.re_p / 24.0;
+  }
 
   std::unique_ptr<LearnedFormula> formula_;
 };

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "closures/lift_closure.hpp"
+#include "closures/closure_registry.hpp"
 #include "closures/learned_formula.hpp"
 
 namespace hs::closures {
@@ -13,7 +14,8 @@ namespace hs::closures {
 class ExpressionLift final : public LiftClosure {
  public:
   /// Loads and compiles the closure file; ConfigError for a bad file or a kind other than "lift".
-  explicit ExpressionLift(const std::filesystem::path& file) : ExpressionLift(std::make_unique<LearnedFormula>(file, "lift")) {}
+  explicit ExpressionLift(const std::filesystem::path& file, OutsideValidity outside = OutsideValidity::clamp)
+      : ExpressionLift(std::make_unique<LearnedFormula>(file, "lift", outside)) {}
   [[nodiscard]] const ClosureFile& file() const { return formula_->file(); }
   [[nodiscard]] LiftVelocity reference_velocity() const override {
     return file().reference_velocity == "flow" ? LiftVelocity::flow : LiftVelocity::slip;

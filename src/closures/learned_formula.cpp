@@ -2,6 +2,7 @@
 // Loading and evaluating learned closure formulas.
 #include "closures/learned_formula.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include <fmt/format.h>
@@ -10,8 +11,8 @@
 
 namespace hs::closures {
 
-LearnedFormula::LearnedFormula(const std::filesystem::path& file, const std::string& expected_kind)
-    : file_(ClosureFile::load(file)) {
+LearnedFormula::LearnedFormula(const std::filesystem::path& file, const std::string& expected_kind, OutsideValidity outside)
+    : file_(ClosureFile::load(file)), outside_(outside) {
   if (file_.kind != expected_kind) {
     throw hs::common::ConfigError(fmt::format("{}: kind = \"{}\": a {} closure is needed here", file.string(),
                                               file_.kind, expected_kind));
@@ -22,8 +23,20 @@ LearnedFormula::LearnedFormula(const std::filesystem::path& file, const std::str
 
 double LearnedFormula::operator()(const ClosureInputs& in) const {
   std::array<double, input_variables.size()> x{};
-  for (std::size_t j = 0; j < fields_.size(); ++j) x[j] = in.*fields_[j];
+  for (std::size_t j = 0; j < fields_.size(); ++j) {
+    x[j] = in.*fields_[j];
+    if (outside_ == OutsideValidity::clamp) x[j] = std::clamp(x[j], file_.validity[j].lo, file_.validity[j].hi);
+  }
   return program_.evaluate_point(x.data());
+}
+
+ClosureInputs LearnedFormula::clamped(const ClosureInputs& in) const {
+  ClosureInputs out = in;
+  if (outside_ != OutsideValidity::clamp) return out;
+  for (std::size_t j = 0; j < fields_.size(); ++j) {
+    out.*fields_[j] = std::clamp(in.*fields_[j], file_.validity[j].lo, file_.validity[j].hi);
+  }
+  return out;
 }
 
 Validity LearnedFormula::validity() const {

@@ -8,6 +8,7 @@
 
 #include "closures/closure.hpp"
 #include "closures/closure_file.hpp"
+#include "closures/closure_registry.hpp"
 #include "regression/compiled_program.hpp"
 
 namespace hs::closures {
@@ -16,10 +17,14 @@ class LearnedFormula {
  public:
   /// Loads `file` and checks that its kind is `expected_kind` (ConfigError otherwise, and for every reason
   /// ClosureFile::load gives).
-  LearnedFormula(const std::filesystem::path& file, const std::string& expected_kind);
+  LearnedFormula(const std::filesystem::path& file, const std::string& expected_kind,
+                 OutsideValidity outside = OutsideValidity::clamp);
 
-  /// The expression at `in` (protected semantics: never NaN/inf for finite inputs).
+  /// The expression at `in`, its inputs clamped to the validity box unless `outside` is extrapolate
+  /// (protected semantics: never NaN/inf for finite inputs).
   [[nodiscard]] double operator()(const ClosureInputs& in) const;
+  /// `in` with the formula's variables clamped to the validity box (unchanged when `outside` is extrapolate).
+  [[nodiscard]] ClosureInputs clamped(const ClosureInputs& in) const;
   [[nodiscard]] const ClosureFile& file() const { return file_; }
   [[nodiscard]] Validity validity() const;
 
@@ -27,6 +32,7 @@ class LearnedFormula {
   ClosureFile file_;
   hs::regression::CompiledProgram program_;
   std::vector<double ClosureInputs::*> fields_;   // feature j of the program
+  OutsideValidity outside_;
 };
 
 }  // namespace hs::closures

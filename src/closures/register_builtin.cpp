@@ -14,16 +14,16 @@ namespace hs::closures {
 void register_builtin(DragRegistry& r) {
   r.add("stokes",           [](const ClosureSpec&) { return std::make_unique<StokesDrag>(); });
   r.add("schiller_naumann", [](const ClosureSpec&) { return std::make_unique<SchillerNaumann>(); });
-  r.add("expression",       [](const ClosureSpec& s) { return std::make_unique<ExpressionDrag>(s.file); });
+  r.add("expression",       [](const ClosureSpec& s) { return std::make_unique<ExpressionDrag>(s.file, s.outside); });
 }
 
 void register_builtin(LiftRegistry& r) {
   r.add("saffman_mei", [](const ClosureSpec&) { return std::make_unique<SaffmanMeiLift>(); });
-  r.add("expression",  [](const ClosureSpec& s) { return std::make_unique<ExpressionLift>(s.file); });
+  r.add("expression",  [](const ClosureSpec& s) { return std::make_unique<ExpressionLift>(s.file, s.outside); });
 }
 
 void register_builtin(DeformationRegistry& r) {
-  r.add("expression", [](const ClosureSpec& s) { return std::make_unique<ExpressionDeformation>(s.file); });
+  r.add("expression", [](const ClosureSpec& s) { return std::make_unique<ExpressionDeformation>(s.file, s.outside); });
 }
 
 std::unique_ptr<DragClosure> make_drag_closure(const ClosureSpec& spec) {

@@ -79,6 +79,14 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   c.lift = closure_key("lift", "none", hs::closures::make_lift_closure);
   c.deformation = closure_key("deformation", "none", hs::closures::make_deformation_closure);
   if (c.drag.model == "none") coupling.fail("drag", "a drag closure is required (a name or a closure file)");
+  const std::string outside = coupling.string_or("outside_validity", "clamp");   // closures/closure_registry.hpp
+  if (outside != "clamp" && outside != "extrapolate") {
+    coupling.fail("outside_validity", fmt::format("\"{}\": use \"clamp\" (learned closures evaluated at the nearest point "
+                                                  "of their validity box) or \"extrapolate\"", outside));
+  }
+  for (hs::closures::ClosureSpec* s : {&c.drag, &c.lift, &c.deformation}) {
+    s->outside = outside == "clamp" ? hs::closures::OutsideValidity::clamp : hs::closures::OutsideValidity::extrapolate;
+  }
   // Default "none" keeps the closures' unbounded-sphere drag; "haberman_sayre" multiplies it by the on-axis
   // confinement factor K(d_p / D) (closures/wall_correction.hpp).
   try {

@@ -88,6 +88,9 @@ TEST(TubePriesCase, BadInputsNameTheKey) {
   std::string wall = pries_case("0.10", "stokes", "125");
   wall.replace(wall.find("[numerics]"), 10, "wall_correction = \"faxen\"\n[numerics]");
   expect_config_error(wall, "wall_correction");                                     // unknown confinement correction
+  std::string range = pries_case("0.10", "stokes", "125");
+  range.replace(range.find("[numerics]"), 10, "outside_validity = \"wrap\"\n[numerics]");
+  expect_config_error(range, "outside_validity");   // neither clamp nor extrapolate
   std::string fine = pries_case("0.10", "stokes", "125");
   fine.replace(fine.find("[numerics]"), 10, "self_induced_correction = true\n[numerics]");
   expect_config_error(fine, "self_induced_correction");   // d_p 5.6 um > dx 3 um: the correction is for point particles
