@@ -17,6 +17,7 @@ struct TaskArgs {
   std::string name;
   std::string json;
   std::string extra;
+  std::string suspension_viscosity;
   bool quick = false;
 };
 
@@ -27,6 +28,8 @@ inline void add_task_options(CLI::App& cmd, TaskArgs& args, const std::map<std::
   cmd.add_option("--json", args.json, "also write the results as JSON to this file");
   cmd.add_flag("--quick", args.quick, "a shorter version (CI)");
   cmd.add_option("--closures", args.extra, "closure set by name or file (validations that use closures)");
+  cmd.add_option("--suspension-viscosity", args.suspension_viscosity,
+                 "none | einstein | pries_bulk: the cells' stress in CFD-DEM validations (default none)");
 }
 
 inline int dispatch_task(const char* kind, const std::map<std::string, TaskEntry>& known, const TaskArgs& args) {
@@ -40,6 +43,7 @@ inline int dispatch_task(const char* kind, const std::map<std::string, TaskEntry
   if (!args.json.empty()) options.json_file = args.json;
   options.quick = args.quick;
   options.extra = args.extra;
+  options.suspension_viscosity = args.suspension_viscosity;
   return it->second.run(options);
 }
 

@@ -28,6 +28,7 @@ struct TaskOptions {
   std::optional<std::filesystem::path> json_file;    // --json FILE
   bool quick = false;                                // --quick: a shorter version (CI)
   std::string extra;                                 // NAME-specific option string (e.g. --closures)
+  std::string suspension_viscosity;                  // --suspension-viscosity NAME (CFD-DEM validations)
 };
 using TaskRunner = std::function<int(const TaskOptions&)>;
 

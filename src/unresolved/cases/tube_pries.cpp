@@ -96,6 +96,11 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   }
   // Off by default: it needs d_p <= dx, i.e. a coarse grid in a narrow tube (self_mobility.hpp).
   c.self_induced_correction = coupling.boolean_or("self_induced_correction", false);
+  try {
+    c.suspension_viscosity = suspension_viscosity_from_name(coupling.string_or("suspension_viscosity", "none"));
+  } catch (const hs::common::ConfigError& e) {
+    coupling.fail("suspension_viscosity", e.what());
+  }
   c.cells_across = static_cast<int>(numerics.integer_in("cells_across_diameter", 4, 1000));
   c.dt_s = numerics.positive("dt_s");
   c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
@@ -264,7 +269,8 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   CfdDemCoupling coupling(fluid, dem,
                           {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0},
                            .tube_radius_m = r_tube, .wall_correction = c.wall_correction,
-                           .self_induced_correction = c.self_induced_correction},
+                           .self_induced_correction = c.self_induced_correction,
+                           .suspension_viscosity = c.suspension_viscosity},
                           make_closures(c));
   TubePriesState st;
   if (restart.resume) {
@@ -340,6 +346,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   j["deformation"] = c.deformation.model == "expression" ? c.deformation.file.string() : c.deformation.model;
   j["wall_correction"] = hs::closures::wall_correction_name(c.wall_correction);
   j["self_induced_correction"] = c.self_induced_correction;
+  j["suspension_viscosity"] = suspension_viscosity_name(c.suspension_viscosity);
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c.fluid.density_kg_m3, c.diameter_m, 2.0 * u_blood, mu)},
                  {"wall_gamma_plus", hs::common::shear_rate_plus(wall_shear_rate, r_tube, c.fluid.kinematic_viscosity_m2_s)},
                  {"confinement_d_over_D", c.particles.diameter_m / c.diameter_m},

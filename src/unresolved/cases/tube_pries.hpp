@@ -12,6 +12,7 @@
 #include "closures/closure_registry.hpp"
 #include "closures/wall_correction.hpp"
 #include "common/case_request.hpp"
+#include "unresolved/coupling/suspension_viscosity.hpp"
 #include "unresolved/dem/particle_params.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
 
@@ -34,6 +35,7 @@ struct TubePriesConfig {
   hs::closures::ClosureSpec drag{}, lift{}, deformation{};   // model "none": no lift / DI = 0
   hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;   // confinement factor on the drag
   bool self_induced_correction = false;  // closures get u_f - M F (CouplingSettings::self_induced_correction)
+  SuspensionViscosity suspension_viscosity = SuspensionViscosity::none;   // the cells' stress (suspension_viscosity.hpp)
   double checkpoint_every_wall_s = 600.0;   // wall-clock interval between restart files (and one at the end)
   std::uint64_t seed = 1;
 };

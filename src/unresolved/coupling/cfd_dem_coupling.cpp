@@ -46,6 +46,9 @@ CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSetting
     throw hs::common::ConfigError(fmt::format("coupling: dt_CFD / dt_DEM = {:.6g} must equal n_coupling = {}",
                                               ratio, settings_.n_coupling));
   }
+  if (settings_.suspension_viscosity != SuspensionViscosity::none && !settings_.void_fraction_feedback) {
+    throw hs::common::ConfigError("coupling: a suspension viscosity needs the void-fraction feedback (it is a function of eps)");
+  }
   if (settings_.self_induced_correction && !(settings_.tube_radius_m > 0.0)) {
     throw hs::common::ConfigError("coupling: the self-induced velocity correction needs the tube radius (tube_radius_m > 0)");
   }
@@ -168,6 +171,10 @@ void CfdDemCoupling::fill_fields() {
       rate[c] = steps_ == 0 || !settings_.void_fraction_rate ? 0.0 : (eps[c] - eps_old_[c]) / (dt * settings_.refresh_every);
     }
     eps_old_ = eps;
+    if (settings_.suspension_viscosity != SuspensionViscosity::none) {
+      fill_cell_field_ghosts(fluid_.grid(), eps);
+      fill_viscosity_factor(fluid_.grid(), settings_.suspension_viscosity, eps, fluid_.viscosity_factor());
+    }
   }
   BlockField<double> weight(fluid_.grid().cells(), 0.0);
   BlockField<double> ksl(fluid_.grid().cells(), 0.0);

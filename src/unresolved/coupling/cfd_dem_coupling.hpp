@@ -12,6 +12,7 @@
 #include "common/vec3.hpp"
 #include "unresolved/coupling/divided_void_fraction.hpp"
 #include "unresolved/coupling/self_mobility.hpp"
+#include "unresolved/coupling/suspension_viscosity.hpp"
 #include "unresolved/dem/dem_system.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
 
@@ -52,6 +53,9 @@ struct CouplingSettings {
   // force each sphere gave the fluid in the last step (drag and lift) and M the grid's self-mobility measured on
   // this tube (self_mobility.hpp). Two-way coupling only; needs tube_radius_m and spheres no larger than a cell.
   bool self_induced_correction = false;
+  // The cells' stress as a local viscosity factor of the smoothed volume fraction (suspension_viscosity.hpp),
+  // refreshed with eps; needs void_fraction_feedback.
+  SuspensionViscosity suspension_viscosity = SuspensionViscosity::none;
 };
 
 /// Closures by role; drag is required, lift and deformation may be null (no lift, DI = 0).

@@ -47,6 +47,7 @@ void FvmSolver::write_state(hs::common::Checkpoint& cp, const std::string& prefi
   cp.put(prefix + "void_fraction", eps_.data());
   cp.put(prefix + "void_fraction_rate", deps_dt_.data());
   cp.put(prefix + "implicit_coefficient", ksl_.data());
+  if (variable_viscosity_) cp.put(prefix + "viscosity_factor", visc_.data());
   cp.put(prefix + "particle_velocity", flatten(us_));
   cp.put(prefix + "explicit_force", flatten(force_));
   const std::vector<double> scalars{time_s_, drive_gradient_};
@@ -67,6 +68,10 @@ void FvmSolver::read_state(const hs::common::Checkpoint& cp, const std::string& 
   restore(cp, prefix + "void_fraction", eps_);
   restore(cp, prefix + "void_fraction_rate", deps_dt_);
   restore(cp, prefix + "implicit_coefficient", ksl_);
+  if (cp.has(prefix + "viscosity_factor")) {
+    restore(cp, prefix + "viscosity_factor", visc_);
+    variable_viscosity_ = true;
+  }
   restore(cp, prefix + "particle_velocity", us_);
   restore(cp, prefix + "explicit_force", force_);
   const std::vector<double>& scalars = sized(cp, prefix + "scalars", 2);

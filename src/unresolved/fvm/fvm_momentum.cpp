@@ -26,6 +26,19 @@ double FvmSolver::momentum_cv_flux(int c, long idx, int dir) const {
   return plus ? 0.5 * (at(idx - sc + sa) + at(idx + sa)) : -0.5 * (at(idx - sc) + at(idx));
 }
 
+/// Viscosity factor on the link from velocity node idx (component c) towards dir: the cell the link crosses
+/// (along c) or the mean of the four cells around the edge it crosses (across c), the usual staggered-grid
+/// placement of a variable viscosity. A wall link takes the same cells (ghosts: zero gradient).
+double FvmSolver::link_viscosity(int c, long idx, int dir) const {
+  const int a = dir / 2;
+  const bool plus = dir % 2 == 1;
+  const long sc = visc_.stride(c);
+  auto v = [&](long i) { return visc_[static_cast<std::size_t>(i)]; };
+  if (a == c) return plus ? v(idx) : v(idx - sc);
+  const long s = plus ? visc_.stride(a) : -visc_.stride(a);
+  return 0.25 * (v(idx - sc) + v(idx) + v(idx - sc + s) + v(idx + s));
+}
+
 /// Factor of nu/dx^2 for link dir of a node (Shortley & Weller 1938): along an axis with neighbours
 /// (or walls) at fractions t1 and t2 of a cell, u'' = 2/(t1 + t2) [(u_1 - u_P)/t1 + (u_2 - u_P)/t2] / dx^2,
 /// which is 1 for the regular stencil. A zero-gradient (outlet) link counts as a full cell.
@@ -72,7 +85,7 @@ void FvmSolver::assemble_momentum(int c, bool convection) {
       const double conv = convection ? momentum_cv_flux(c, idx, dir) * inv_2v : 0.0;
       const NodeLink link = lid < 0 ? NodeLink{} : comp.links[static_cast<std::size_t>(lid)][static_cast<std::size_t>(dir)];
       if (link.type == NodeLink::Type::neumann) continue;
-      const double d = e * nu_h2 * shortley_weller(comp, lid, dir);
+      const double d = e * nu_h2 * shortley_weller(comp, lid, dir) * (variable_viscosity_ ? link_viscosity(c, idx, dir) : 1.0);
       diag += d;
       conv_diag -= conv;
       if (link.type == NodeLink::Type::active) {

@@ -58,7 +58,11 @@ Vec3 FvmSolver::viscous_force_density_at(const Vec3& x_m) const {
     d[b] = h_;
     lap += (velocity_at(x_m + d) - 2.0 * centre + velocity_at(x_m - d)) / (h_ * h_);
   }
-  return fluid_.density_kg_m3 * fluid_.kinematic_viscosity_m2_s * lap;
+  double factor = 1.0;
+  if (variable_viscosity_) {
+    if (const auto cell = grid_.cell_of(x_m)) factor = visc_((*cell)[0], (*cell)[1], (*cell)[2]);
+  }
+  return factor * fluid_.density_kg_m3 * fluid_.kinematic_viscosity_m2_s * lap;
 }
 
 Vec3 FvmSolver::pressure_gradient_at(const Vec3& x_m) const {

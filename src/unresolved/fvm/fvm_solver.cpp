@@ -33,6 +33,7 @@ FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const Pi
   eps_ = BlockField<double>(n, 1.0);
   ksl_ = BlockField<double>(n, 0.0);
   deps_dt_ = BlockField<double>(n, 0.0);
+  visc_ = BlockField<double>(n, 1.0);
   us_ = BlockField<Vec3>(n, Vec3{});
   force_ = BlockField<Vec3>(n, Vec3{});
   p_ = BlockField<double>(n, 0.0);
@@ -125,6 +126,7 @@ void FvmSolver::step() {
   if (coefficients_dirty_) {
     fill_cell_ghosts(eps_);
     fill_cell_ghosts(ksl_);
+    if (variable_viscosity_) fill_cell_ghosts(visc_);
     for (int c = 0; c < 3; ++c) assemble_momentum(c);   // A (hence rAU) depends on eps and Ksl
     build_pressure_matrix();
     if (drive_.mode == FlowDrive::Mode::flow_rate) compute_drive_response();

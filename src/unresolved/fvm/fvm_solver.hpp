@@ -81,6 +81,11 @@ class FvmSolver {
   [[nodiscard]] BlockField<hs::common::Vec3>& explicit_force_density_N_m3() { return force_; }
   /// d(eps)/dt, 1/s, the volume source of the pressure equation (CFDEM step 7).
   [[nodiscard]] BlockField<double>& void_fraction_rate_1_s() { return deps_dt_; }
+  /// Local viscosity over the plasma's (>= 1; the suspension's particle stress, coupling/suspension_viscosity):
+  /// the viscous link between two velocity nodes takes the mean over the cells it crosses. Asking for it writable
+  /// switches the variable-viscosity stencil on (untouched, the stencil is the constant-viscosity one).
+  [[nodiscard]] BlockField<double>& viscosity_factor() { variable_viscosity_ = true; return visc_; }
+  [[nodiscard]] const BlockField<double>& viscosity_factor() const { return visc_; }
   void coupling_fields_changed() { coefficients_dirty_ = true; }
   [[nodiscard]] const BlockField<double>& void_fraction() const { return eps_; }
 
@@ -89,8 +94,9 @@ class FvmSolver {
   [[nodiscard]] hs::common::Vec3 velocity_at(const hs::common::Vec3& x_m) const;
   /// grad u at a point: g[a][b] = d u_a / d x_b, 1/s (central differences of velocity_at over one cell).
   [[nodiscard]] std::array<hs::common::Vec3, 3> velocity_gradient_at(const hs::common::Vec3& x_m) const;
-  /// div(tau) = mu lap(u) at a point, N/m^3 (second differences of velocity_at over one cell): the
-  /// viscous force density the coupling turns into -V_p div(tau) on a particle (model A).
+  /// div(tau) = mu lap(u) at a point, N/m^3 (second differences of velocity_at over one cell, times the viscosity
+  /// factor of the cell holding the point): the viscous force density the coupling turns into V_p div(tau) on a
+  /// particle (model A).
   [[nodiscard]] hs::common::Vec3 viscous_force_density_at(const hs::common::Vec3& x_m) const;
   /// grad p at a point, Pa/m, including the driving mean gradient.
   [[nodiscard]] hs::common::Vec3 pressure_gradient_at(const hs::common::Vec3& x_m) const;
@@ -141,6 +147,7 @@ class FvmSolver {
   void fill_pressure_ghosts();
   [[nodiscard]] double face_average(const BlockField<double>& cell_field, int c, long idx) const;
   [[nodiscard]] double momentum_cv_flux(int c, long idx, int dir) const;
+  [[nodiscard]] double link_viscosity(int c, long idx, int dir) const;
   [[nodiscard]] double interpolate(int c, const BlockField<double>& field, const hs::common::Vec3& x_m) const;
   void check_state() const;
 
@@ -155,6 +162,7 @@ class FvmSolver {
   double time_s_ = 0.0;
   long steps_ = 0;
   bool coefficients_dirty_ = true;
+  bool variable_viscosity_ = false;
   StepStats stats_;
 
   std::array<Component, 3> comp_;
@@ -168,7 +176,7 @@ class FvmSolver {
   std::vector<double> p_rhs_, p_x_;
   PressureSolver pressure_;
 
-  BlockField<double> eps_, ksl_, deps_dt_;
+  BlockField<double> eps_, ksl_, deps_dt_, visc_;
   BlockField<hs::common::Vec3> us_, force_;
 };
 

@@ -91,6 +91,9 @@ TEST(TubePriesCase, BadInputsNameTheKey) {
   std::string range = pries_case("0.10", "stokes", "125");
   range.replace(range.find("[numerics]"), 10, "outside_validity = \"wrap\"\n[numerics]");
   expect_config_error(range, "outside_validity");   // neither clamp nor extrapolate
+  std::string visc = pries_case("0.10", "stokes", "125");
+  visc.replace(visc.find("[numerics]"), 10, "suspension_viscosity = \"quemada\"\n[numerics]");
+  expect_config_error(visc, "suspension_viscosity");   // not one of none, einstein, pries_bulk
   std::string fine = pries_case("0.10", "stokes", "125");
   fine.replace(fine.find("[numerics]"), 10, "self_induced_correction = true\n[numerics]");
   expect_config_error(fine, "self_induced_correction");   // d_p 5.6 um > dx 3 um: the correction is for point particles
