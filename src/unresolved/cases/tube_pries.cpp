@@ -46,9 +46,11 @@ std::array<SideCondition, 6> periodic_z() {
 
 }  // namespace
 
-hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file) {
+hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file, const std::filesystem::path& base_dir) {
   const std::filesystem::path p(name_or_file);
-  if (p.extension() == ".toml") return {.model = "expression", .file = std::filesystem::absolute(p)};
+  if (p.extension() == ".toml") {
+    return {.model = "expression", .file = std::filesystem::absolute(p.is_relative() && !base_dir.empty() ? base_dir / p : p)};
+  }
   return {.model = name_or_file, .file = {}};
 }
 
@@ -70,7 +72,8 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   c.seed = static_cast<std::uint64_t>(cells.integer_in_or("seed", 0, 1L << 40, 1));
   c.particles = parse_particle_params(particles);
   auto closure_key = [&](const char* key, const char* fallback, auto make) {
-    const hs::closures::ClosureSpec spec = coupling.has(key) ? closure_spec_from(coupling.string(key)) : closure_spec_from(fallback);
+    const hs::closures::ClosureSpec spec = coupling.has(key) ? closure_spec_from(coupling.string(key), file.file().parent_path())
+                                                             : closure_spec_from(fallback);
     check_closure(coupling, key, spec, make);
     return spec;
   };
@@ -345,6 +348,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   j["lift"] = c.lift.model == "expression" ? c.lift.file.string() : c.lift.model;
   j["deformation"] = c.deformation.model == "expression" ? c.deformation.file.string() : c.deformation.model;
   j["wall_correction"] = hs::closures::wall_correction_name(c.wall_correction);
+  j["outside_validity"] = c.drag.outside == hs::closures::OutsideValidity::clamp ? "clamp" : "extrapolate";
   j["self_induced_correction"] = c.self_induced_correction;
   j["suspension_viscosity"] = suspension_viscosity_name(c.suspension_viscosity);
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c.fluid.density_kg_m3, c.diameter_m, 2.0 * u_blood, mu)},

@@ -54,8 +54,10 @@ struct TubePriesResult {
 /// violation, a length that is not a whole number of cells) is a ConfigError naming the key.
 [[nodiscard]] TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick);
 /// Closure spec from one string: a registered name ("stokes", "schiller_naumann", "saffman_mei", "none") or a
-/// closure file (*.toml, model "expression").
-[[nodiscard]] hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file);
+/// closure file (*.toml, model "expression"; a relative path is taken relative to `base_dir`, the case file's folder
+/// in a case, the working directory when empty).
+[[nodiscard]] hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file,
+                                                          const std::filesystem::path& base_dir = {});
 
 /// Time series sample handed to the observer every CFD step.
 struct TubePriesSample {
