@@ -29,7 +29,7 @@ inline void add_task_options(CLI::App& cmd, TaskArgs& args, const std::map<std::
   cmd.add_flag("--quick", args.quick, "a shorter version (CI)");
   cmd.add_option("--closures", args.extra, "closure set by name or file (validations that use closures)");
   cmd.add_option("--suspension-viscosity", args.suspension_viscosity,
-                 "none | einstein | pries_bulk: the cells' stress in CFD-DEM validations (default none)");
+                 "none | einstein | pries_bulk: the cells' stress in CFD-DEM validations (pries: default pries_bulk)");
 }
 
 inline int dispatch_task(const char* kind, const std::map<std::string, TaskEntry>& known, const TaskArgs& args) {

@@ -34,6 +34,12 @@ fs::path first_toml(const fs::path& dir) {
   return files.empty() ? fs::path{} : files.front();
 }
 
+/// The model validated unless told otherwise: the closures learned from the resolved campaign (as the committed
+/// tube-pries case) with blood's bulk viscosity law. `--closures schiller_naumann --suspension-viscosity none` is
+/// the rigid-sphere baseline.
+const std::string kDefaultClosures = (fs::path(HS_SOURCE_DIR) / "data/closures/resolved").string();
+constexpr const char* kDefaultViscosity = "pries_bulk";
+
 void select_closures(const std::string& choice, TubePriesConfig& c) {
   c.drag = closure_spec_from("schiller_naumann");   // rigid-sphere baseline (methods note 3.2)
   c.lift = closure_spec_from("none");
@@ -80,7 +86,9 @@ TubePriesConfig config_for(double diameter_um, double hematocrit, bool quick, co
 }
 
 fs::path output_dir(const hs::common::TaskOptions& options) {
-  return options.json_file ? fs::absolute(*options.json_file).parent_path() : fs::current_path();
+  const fs::path dir = options.json_file ? fs::absolute(*options.json_file).parent_path() : fs::current_path();
+  fs::create_directories(dir);   // --json results/pries.json makes results/
+  return dir;
 }
 
 }  // namespace
@@ -93,18 +101,19 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
                                        "mu_rel_error_pct", "rbc_count", "steady"});
+  const std::string closures = options.extra.empty() ? kDefaultClosures : options.extra;
   nlohmann::json result = {{"validation", "pries"},
                            {"reference", "Pries, Neuhaus & Gaehtgens 1992, Am J Physiol 263:H1770 (in vitro, high shear)"},
-                           {"closures", options.extra.empty() ? "schiller_naumann (rigid-sphere baseline)" : options.extra},
+                           {"closures", closures},
                            {"wall_correction", hs::closures::wall_correction_name(wall)},
                            {"quick", options.quick}};
   const SuspensionViscosity viscosity =
-      suspension_viscosity_from_name(options.suspension_viscosity.empty() ? "none" : options.suspension_viscosity);
+      suspension_viscosity_from_name(options.suspension_viscosity.empty() ? kDefaultViscosity : options.suspension_viscosity);
   result["suspension_viscosity"] = suspension_viscosity_name(viscosity);
   double max_error = 0.0;
   for (const double d_um : {30.0, 50.0, 100.0}) {
     for (const double ht : {0.05, 0.10, 0.15}) {
-      TubePriesConfig c = config_for(d_um, ht, options.quick, options.extra, viscosity);
+      TubePriesConfig c = config_for(d_um, ht, options.quick, closures, viscosity);
       c.wall_correction = wall;
       const TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
       const double err = std::max(std::abs(r.ht_d_error_pct), std::abs(r.mu_rel_error_pct));
