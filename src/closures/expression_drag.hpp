@@ -21,12 +21,12 @@ class ExpressionDrag final : public DragClosure {
  private:
   explicit ExpressionDrag(std::unique_ptr<LearnedFormula> f)
       : DragClosure(f->file().name, f->validity()), formula_(std::move(f)) {}
-  [[nodiscard]] double compute_drag_coefficient(const DragInputs& in) const override { return (*formula_)(in); }
-  /// Clamped, Re_p in C_d Re_p / 24 is clamped too: the correction keeps its edge value, so a Stokes-like drag
-  /// stays linear in the slip below the box instead of vanishing with Re_p.
-  [[nodiscard]] double compute_correction(const DragInputs& in) const override {
+  /// Clamped outside the box, the correction C_d Re_p / 24 keeps its edge value (so a Stokes-like drag stays linear
+  /// in the slip below the box instead of vanishing with Re_p), and C_d is the one that gives that correction.
+  [[nodiscard]] double compute_drag_coefficient(const DragInputs& in) const override {
     const DragInputs c = formula_->clamped(in);
-    return (*formula_)(c) * c.re_p / 24.0;
+    const double cd = (*formula_)(c);
+    return c.re_p == in.re_p || !(in.re_p > 0.0) ? cd : cd * c.re_p / in.re_p;
   }
 
   std::unique_ptr<LearnedFormula> formula_;

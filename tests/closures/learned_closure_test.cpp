@@ -47,14 +47,16 @@ TEST(ExpressionDrag, CountsEvaluationsOutsideValidityFromManyThreads) {
 }
 
 TEST(ExpressionDrag, OutsideItsValidityItClampsOrExtrapolatesAsAsked) {
-  // re_p = 0.5 lies beyond the box [0.01, 0.12]: clamped, the formula is evaluated at 0.12; extrapolated, at 0.5.
+  // re_p = 0.5 lies beyond the box [0.01, 0.12]: clamped, the correction C_d Re_p / 24 is the formula's at the box
+  // edge (re_p 0.12, di 0.1), so C_d = C_d(edge) x 0.12 / 0.5; extrapolated, the formula at 0.5.
   const auto clamped = hc::make_drag_closure({.model = "expression", .file = drag_file()});
   const auto raw = hc::make_drag_closure({.model = "expression", .file = drag_file(), .outside = hc::OutsideValidity::extrapolate});
   const hc::DragInputs in{.re_p = 0.5, .di = 0.05};
-  EXPECT_DOUBLE_EQ(clamped->drag_coefficient(in), 24.0 / 0.12 * (1.0 + 0.5 * 0.1));
+  EXPECT_DOUBLE_EQ(clamped->drag_coefficient(in), 24.0 / 0.12 * (1.0 + 0.5 * 0.1) * 0.12 / 0.5);
   EXPECT_DOUBLE_EQ(raw->drag_coefficient(in), 24.0 / 0.5 * (1.0 + 0.5 * 0.05));
   EXPECT_EQ(clamped->outside_validity(), 1);   // counted either way
   EXPECT_EQ(raw->outside_validity(), 1);
+  EXPECT_DOUBLE_EQ(clamped->correction(in), 24.0 / 0.12 * (1.0 + 0.5 * 0.1) * 0.12 / 24.0);
   // The drag correction C_d Re_p / 24 keeps its edge value: at a slip far below the box the drag stays Stokes-like.
   const hc::DragInputs slow{.re_p = 1e-5, .di = 0.3};
   EXPECT_DOUBLE_EQ(clamped->correction(slow), 24.0 / 0.01 * (1.0 + 0.5 * 0.3) * 0.01 / 24.0);

@@ -49,6 +49,10 @@ CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSetting
   if (settings_.suspension_viscosity != SuspensionViscosity::none && !settings_.void_fraction_feedback) {
     throw hs::common::ConfigError("coupling: a suspension viscosity needs the void-fraction feedback (it is a function of eps)");
   }
+  if (settings_.self_induced_correction && (!settings_.two_way || settings_.suspension_viscosity != SuspensionViscosity::none)) {
+    // One-way: nothing to correct. With a suspension viscosity the measured M (plasma viscosity) would be too large.
+    throw hs::common::ConfigError("coupling: the self-induced velocity correction needs two-way coupling and no suspension viscosity");
+  }
   if (settings_.self_induced_correction && !(settings_.tube_radius_m > 0.0)) {
     throw hs::common::ConfigError("coupling: the self-induced velocity correction needs the tube radius (tube_radius_m > 0)");
   }

@@ -73,7 +73,7 @@ SelfMobility::SelfMobility(const FvmGrid& grid, const FluidProperties& fluid, co
   rest.flow_rate_m3_s = 0.0;
   const int ray = frame.axis == 0 ? 1 : 0;                 // stations along this grid axis
   const int azimuth = 3 - frame.axis - ray;
-  // Axially at the cell centre nearest the middle of the box (M varies a few % with the position in a cell).
+  // Axially at the cell centre nearest the middle of the box (M varies up to +-30% with the position in a cell).
   const double dx = grid.dx_m();
   const double lo = grid.origin_m()[frame.axis];
   const int n_axial = grid.cells()[static_cast<std::size_t>(frame.axis)];

@@ -31,8 +31,11 @@ struct TubeFrame {
 /// M is measured once on the run's own grid, drive and marker map (DividedMap): for a sphere at a few radial
 /// stations from the axis to R - d/2, a force along the axis, along the radius and along the azimuth is spread over
 /// its 29 markers in a fluid at rest, the flow is run to steady state (Stokes: the disturbance's Reynolds number is
-/// ~1e-4), and the velocity interpolated at the centre gives the diagonal of M in the tube frame (the off-diagonal
-/// terms vanish by the mirror symmetry through the sphere's radial plane). Between stations M is interpolated
+/// ~1e-4), and the velocity interpolated at the centre gives the diagonal of M in the tube frame (the azimuthal
+/// couplings vanish by the mirror symmetry through the sphere's radial plane, the axial-radial ones by the one
+/// through its cross-section, which the grid keeps at a cell centre, where the stations sit). The measurement
+/// includes the tube-wide response of the run's drive (with a pressure-gradient drive an axial force also adds a
+/// Poiseuille flow, ~7% of the Stokes mobility at D = 30 um, L = 60 um). Between stations M is interpolated
 /// linearly. M varies by up to +-30% with where the sphere sits in a cell (markers and interpolation change cells;
 /// the stations fall at different such positions, hence the table's zig-zag): the correction is as good as that.
 class SelfMobility {

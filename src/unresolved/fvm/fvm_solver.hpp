@@ -84,7 +84,14 @@ class FvmSolver {
   /// Local viscosity over the plasma's (>= 1; the suspension's particle stress, coupling/suspension_viscosity):
   /// the viscous link between two velocity nodes takes the mean over the cells it crosses. Asking for it writable
   /// switches the variable-viscosity stencil on (untouched, the stencil is the constant-viscosity one).
-  [[nodiscard]] BlockField<double>& viscosity_factor() { variable_viscosity_ = true; return visc_; }
+  /// Writing it marks the coefficients for rebuilding, as coupling_fields_changed() does. The viscous term is
+  /// div(mu grad u): the transpose part div(mu grad u^T) = grad(mu) . grad u, which vanishes for a parallel
+  /// flow along a tube, is left out (as for eps).
+  [[nodiscard]] BlockField<double>& viscosity_factor() {
+    variable_viscosity_ = true;
+    coefficients_dirty_ = true;
+    return visc_;
+  }
   [[nodiscard]] const BlockField<double>& viscosity_factor() const { return visc_; }
   void coupling_fields_changed() { coefficients_dirty_ = true; }
   [[nodiscard]] const BlockField<double>& void_fraction() const { return eps_; }

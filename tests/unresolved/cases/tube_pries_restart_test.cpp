@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 using hs::unresolved::TubePriesSample;
 
 /// A short 30 um tube at Ht_c = 0.30 (68 spheres; 37 contact springs at the stop, so the springs' restart is
-/// exercised), with the Haberman-Sayre wall correction on; `steps` CFD steps of 0.2 ms (125 DEM steps each).
+/// exercised), with the Haberman-Sayre wall correction, a lift (its per-sphere column) and the suspension viscosity
+/// (its factor field) on; `steps` CFD steps of 0.2 ms (125 DEM steps each).
 std::string restart_case(int steps) {
   return R"([case]
 type = "tube-pries"
@@ -42,6 +43,8 @@ tube_hematocrit = 0.30
 youngs_modulus_Pa = 1.0e3
 [coupling]
 drag = "schiller_naumann"
+lift = "saffman_mei"
+suspension_viscosity = "pries_bulk"
 wall_correction = "haberman_sayre"
 [numerics]
 cells_across_diameter = 10
