@@ -26,6 +26,7 @@ class LearnedFormula {
   /// `in` with the formula's variables clamped to the validity box (unchanged when `outside` is extrapolate).
   [[nodiscard]] ClosureInputs clamped(const ClosureInputs& in) const;
   [[nodiscard]] const ClosureFile& file() const { return file_; }
+  [[nodiscard]] OutsideValidity outside() const { return outside_; }
   [[nodiscard]] Validity validity() const;
 
  private:

@@ -61,3 +61,18 @@ TEST(ExpressionDrag, OutsideItsValidityItClampsOrExtrapolatesAsAsked) {
   const hc::DragInputs slow{.re_p = 1e-5, .di = 0.3};
   EXPECT_DOUBLE_EQ(clamped->correction(slow), 24.0 / 0.01 * (1.0 + 0.5 * 0.3) * 0.01 / 24.0);
 }
+
+TEST(ExpressionLift, ClampedBelowItsShearBoxTheLiftFadesToZeroOnTheAxis) {
+  // C_l = 2 gamma+ - 0.5 on gamma+ in [0.1, 0.3]: at the box edge -0.3; below it, clamped, -0.3 x gamma+ / 0.1
+  // (the lift is odd in r, gamma+ linear in r); extrapolated, the formula itself.
+  const fs::path p = fs::temp_directory_path() / "hs_learned_lift.toml";
+  std::ofstream(p) << "name = \"cl\"\nkind = \"lift\"\noutput = \"C_l\"\nexpression = \"2*gamma_plus - 0.5\"\n"
+                      "[variables]\ngamma_plus = \"gamma+\"\n[validity]\ngamma_plus = [0.1, 0.3]\n";
+  const auto clamped = hc::make_lift_closure({.model = "expression", .file = p});
+  const auto raw = hc::make_lift_closure({.model = "expression", .file = p, .outside = hc::OutsideValidity::extrapolate});
+  EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.gamma_plus = 0.2}), -0.1);          // inside: the formula
+  EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.gamma_plus = 0.05}), -0.3 * 0.5);   // half way to the axis
+  EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.gamma_plus = 0.0}), 0.0);           // on the axis
+  EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.gamma_plus = 0.5}), 0.1);           // above: held at the edge
+  EXPECT_DOUBLE_EQ(raw->lift_coefficient({.gamma_plus = 0.05}), -0.4);
+}
