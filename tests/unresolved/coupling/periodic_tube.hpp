@@ -1,25 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The set-up the coupling tests share: a tube of diameter D along z, periodic over its length, D / 10 cells across,
-// filled with plasma driven at a fixed flow rate.
+// The set-up the coupling tests share: the periodic tube of ../fvm/periodic_tube_grid.hpp filled with plasma driven
+// at a fixed flow rate.
 #pragma once
 
-#include "common/geometry/tube.hpp"
+#include "../fvm/periodic_tube_grid.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
 
 namespace hs::unresolved::test {
-
-inline hs::common::Tube tube_along_z(double diameter_m, double length_m) {
-  return hs::common::Tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length_m}, .radius_m = 0.5 * diameter_m});
-}
-
-/// The grid of `tube` (which it keeps a reference to): box [-R, R]^2 x [0, L], periodic along z.
-inline FvmGrid periodic_tube_grid(const hs::common::Tube& tube, double diameter_m, double length_m, int cells_across = 10) {
-  const double r = 0.5 * diameter_m;
-  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length_m}}, .dx_m = diameter_m / cells_across, .sides = {}};
-  spec.sides[4].type = SideType::periodic;
-  spec.sides[5].type = SideType::periodic;
-  return FvmGrid(tube, spec);
-}
 
 /// Plasma on that grid with tight solver tolerances, driven along z at `flow_rate_m3_s` (0: no net flux).
 inline FvmSolver tube_plasma(const FvmGrid& grid, double density_kg_m3, double kinematic_viscosity_m2_s, double dt_s,

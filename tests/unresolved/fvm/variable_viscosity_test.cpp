@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "common/geometry/tube.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
+#include "periodic_tube_grid.hpp"
 
 namespace {
 
@@ -34,13 +34,9 @@ double two_layer_flow_rate(double a, double m) {
 /// blown up within 150 steps at 60 and 240; with this 3x core: steady at 7.2, blown up at 18). 400 steps are
 /// 9.6 viscous times R^2 / nu of the plasma: the slowest mode is damped by e^-50.
 double flow_rate(double a, double m) {
-  const double h = 2.0 * kRadius / 20;
-  const double length = 4 * h;
-  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = kRadius});
-  FvmGridSpec spec{.box_m = {{-kRadius, -kRadius, 0.0}, {kRadius, kRadius, length}}, .dx_m = h, .sides = {}};
-  spec.sides[4].type = SideType::periodic;
-  spec.sides[5].type = SideType::periodic;
-  const FvmGrid grid(tube, spec);
+  const double length = 4 * (2.0 * kRadius / 20);
+  const hs::common::Tube tube = test::tube_along_z(2.0 * kRadius, length);
+  const FvmGrid grid = test::periodic_tube_grid(tube, 2.0 * kRadius, length, 20);
   FvmSolver solver(grid, {.density_kg_m3 = kRho, .kinematic_viscosity_m2_s = kNu}, {.dt_s = 2e-6},
                    {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = kGradient});
   BlockField<double>& factor = solver.viscosity_factor();
