@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -120,6 +121,7 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
       max_error = std::max(max_error, err);
       fmt::print("pries: D = {:5.1f} um Ht_c = {:.2f}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
                  d_um, ht, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
+      std::fflush(stdout);   // one line per tube as it finishes, also into a log file (the table takes ~16 min)
       csv->row({d_um, ht, r.summary["tube_hematocrit"].get<double>(), r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries,
                r.mu_rel_error_pct, r.summary["rbc_count"].get<double>(), r.summary["steady"].get<bool>() ? 1.0 : 0.0});
       nlohmann::json row = r.summary;
