@@ -23,20 +23,19 @@ LearnedFormula::LearnedFormula(const std::filesystem::path& file, const std::str
 
 double LearnedFormula::operator()(const ClosureInputs& in) const {
   std::array<double, input_variables.size()> x{};
-  for (std::size_t j = 0; j < fields_.size(); ++j) {
-    x[j] = in.*fields_[j];
-    if (outside_ == OutsideValidity::clamp) x[j] = std::clamp(x[j], file_.validity[j].lo, file_.validity[j].hi);
-  }
+  for (std::size_t j = 0; j < fields_.size(); ++j) x[j] = input(in, j);
   return program_.evaluate_point(x.data());
 }
 
 ClosureInputs LearnedFormula::clamped(const ClosureInputs& in) const {
   ClosureInputs out = in;
-  if (outside_ != OutsideValidity::clamp) return out;
-  for (std::size_t j = 0; j < fields_.size(); ++j) {
-    out.*fields_[j] = std::clamp(in.*fields_[j], file_.validity[j].lo, file_.validity[j].hi);
-  }
+  for (std::size_t j = 0; j < fields_.size(); ++j) out.*fields_[j] = input(in, j);
   return out;
+}
+
+double LearnedFormula::input(const ClosureInputs& in, std::size_t j) const {
+  const double v = in.*fields_[j];
+  return outside_ == OutsideValidity::clamp ? std::clamp(v, file_.validity[j].lo, file_.validity[j].hi) : v;
 }
 
 Validity LearnedFormula::validity() const {

@@ -30,6 +30,9 @@ class LearnedFormula {
   [[nodiscard]] Validity validity() const;
 
  private:
+  /// Variable j of the formula at `in`, clamped to its validity interval unless `outside_` is extrapolate.
+  [[nodiscard]] double input(const ClosureInputs& in, std::size_t j) const;
+
   ClosureFile file_;
   hs::regression::CompiledProgram program_;
   std::vector<double ClosureInputs::*> fields_;   // feature j of the program
