@@ -18,7 +18,7 @@ done
 
 packages=(build-essential cmake git libeigen3-dev libopenmpi-dev openmpi-bin libhypre-dev libtomlplusplus-dev
           libcli11-dev nlohmann-json3-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
-          python3-matplotlib python3-numpy)
+          python3-matplotlib python3-numpy zlib1g-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

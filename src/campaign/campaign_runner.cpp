@@ -23,6 +23,7 @@
 #include "campaign/case_template.hpp"
 #include "campaign/dataset_writer.hpp"
 #include "campaign/invocation_log.hpp"
+#include "campaign/run_archive.hpp"
 #include "common/errors.hpp"
 #include "common/io/checkpoint.hpp"
 #include "common/progress.hpp"
@@ -117,6 +118,7 @@ std::vector<RunRecord> CampaignRunner::records() const {
     const auto dir = spec_.dir / "runs" / name;
     std::filesystem::create_directories(dir);
     RunRecord r = read_run_record(dir, name);
+    if (!spec_.archive_dir.empty() && restore_run(r, spec_.archive_dir)) r = read_run_record(dir, name);
     // A run never started follows campaign.toml as it is now (an override added, the template edited); one that
     // has started keeps the case it started with.
     const bool never_started = r.state == RunState::pending && r.attempts == 0 && !std::filesystem::exists(r.output_dir());
@@ -145,11 +147,11 @@ std::string CampaignRunner::status_table() const {
   const int left = count[RunState::running] + count[RunState::resumable] + count[RunState::pending];
   out += fmt::format("wall time of the runs so far {} ({} thread{} per run)", common::Progress::format_duration(wall_total),
                      spec_.threads_per_job, spec_.threads_per_job == 1 ? "" : "s");
-  const InvocationTotals campaign = read_invocation_totals(spec_.dir / "runs" / "invocations.json");
+  const InvocationTotals campaign = read_invocation_totals(invocation_file(spec_));
   if (campaign.invocations > 0) {
-    out += fmt::format("; of the campaign {} over {} invocation{} (runs/invocations.json)",
+    out += fmt::format("; of the campaign {} over {} invocation{} ({})",
                        common::Progress::format_duration(campaign.wall_s), campaign.invocations,
-                       campaign.invocations == 1 ? "" : "s");
+                       campaign.invocations == 1 ? "" : "s", invocation_file(spec_).string());
   }
   const double estimate = estimate_left_s(runs, spec_.jobs);
   if (estimate >= 0.0 && left > 0) {
@@ -175,6 +177,10 @@ int CampaignRunner::run() {
       write_run_status(runs[i]);
     }
     if (runs[i].state == RunState::pending || runs[i].state == RunState::resumable) queue.push_back(i);
+    if (runs[i].state == RunState::done && !spec_.archive_dir.empty() &&
+        !std::filesystem::exists(spec_.archive_dir / runs[i].name / "status.json")) {
+      archive_finished_run(runs[i], spec_.archive_dir);   // done before the archive existed
+    }
   }
   write_dataset(spec_, runs);   // the rows of the runs done now (reopened runs drop out until they finish again)
   std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
@@ -186,7 +192,10 @@ int CampaignRunner::run() {
   progress.set_eta_estimate([&](long) { return estimate_left_s(runs, spec_.jobs); });
   if (!queue.empty()) progress.update(0);   // a finished campaign says nothing
   std::optional<InvocationLog> invocation;   // only an invocation that runs something is worth recording
-  if (!queue.empty()) invocation.emplace(spec_.dir / "runs" / "invocations.json");
+  if (!queue.empty()) {
+    std::filesystem::create_directories(invocation_file(spec_).parent_path());
+    invocation.emplace(invocation_file(spec_));
+  }
   auto last_touch = Clock::now();
   const common::StopRequestScope stop_requests;
   bool stop_forwarded = false;
@@ -244,6 +253,8 @@ int CampaignRunner::run() {
       r.state = common::Checkpoint::exists(r.output_dir() / "checkpoint") ? RunState::resumable : RunState::pending;
     }
     write_run_status(r);
+    if (!spec_.archive_dir.empty() && r.state == RunState::done) archive_finished_run(r, spec_.archive_dir);
+    if (!spec_.archive_dir.empty() && r.state == RunState::resumable) archive_checkpoint(r, spec_.archive_dir);
     progress.note(fmt::format("{}: {} after {}{}", r.name, to_string(r.state),
                               common::Progress::format_duration(r.wall_s), r.reason.empty() ? "" : " (" + r.reason + ")"));
     // A run stopped on request or killed is not finished: the progress line (and its ETA) counts only those that are.

@@ -51,9 +51,14 @@ struct CampaignSpec {
   std::vector<GridAxis> axes;
   std::vector<GridOverride> overrides;
   std::filesystem::path dataset_file;
+  std::filesystem::path archive_dir;         // committed copy of finished runs and checkpoints (empty: none)
   std::vector<std::string> row_axes;         // axes that make a row (the others are merged into it)
   std::vector<DatasetColumn> columns;
 };
+
+/// Where the campaign's invocations are recorded: in the archive when there is one (so the wall time adds up across
+/// machines), else CAMPAIGN_DIR/runs/invocations.json.
+std::filesystem::path invocation_file(const CampaignSpec& spec);
 
 /// Reads and checks `dir/campaign.toml` (strict: ConfigError naming key and value on any problem).
 CampaignSpec read_campaign_spec(const std::filesystem::path& dir);

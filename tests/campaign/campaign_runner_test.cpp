@@ -32,7 +32,7 @@ using Result = hs::test::CommandResult;
 Result run(const std::string& args) { return hs::test::run_hemoscale(args); }
 
 /// A 5-lattice-spacing tube: each run reaches steady state in about a hundred steps.
-fs::path make_campaign(const std::string& name, const std::string& reynolds_values) {
+fs::path make_campaign(const std::string& name, const std::string& reynolds_values, const std::string& campaign_lines = "") {
   const auto dir = fs::temp_directory_path() / ("hs_campaign_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -53,7 +53,7 @@ tau = 2.5
 vtk_frames = 1
 )";
   std::ofstream(dir / "campaign.toml") << "[campaign]\nname = \"test\"\ntemplate = \"case.toml\"\njobs = 2\n"
-                                       << "[grid.re]\nkey = \"flow.reynolds\"\nvalues = " << reynolds_values << "\n"
+                                       << campaign_lines << "[grid.re]\nkey = \"flow.reynolds\"\nvalues = " << reynolds_values << "\n"
                                        << "[dataset]\nfile = \"dataset.csv\"\nrow_axes = \"re\"\n"
                                        << "[dataset.columns.u_max_m_s]\npointer = \"/u_max_m_s\"\n"
                                        << "[dataset.columns.u_max_analytic_m_s]\npointer = \"/u_max_analytic_m_s\"\n";
@@ -82,6 +82,25 @@ TEST(Campaign, RunsEveryPointOnceAndAssemblesTheDataset) {
   EXPECT_EQ(totals.invocations, 1);
   EXPECT_GT(totals.wall_s, 0.0);
   EXPECT_NE(second.output.find("over 1 invocation"), std::string::npos) << second.output;
+}
+
+TEST(Campaign, AFreshCloneGoesOnFromTheArchive) {
+  // The run folders are scratch (git-ignored); the archive is what gets committed. A clone without runs/ must find
+  // every finished run done, rebuild the dataset from the archived summaries, and run nothing again.
+  const auto dir = make_campaign("archive", "[0.1, 0.2]", "archive = \"archive\"\n");
+  ASSERT_EQ(run("campaign " + dir.string()).code, 0);
+  for (const char* file : {"summary.json", "status.json", "timeseries.csv.gz"}) {
+    EXPECT_TRUE(fs::exists(dir / "archive" / "re-0.1" / file)) << file;
+  }
+  EXPECT_EQ(hs::campaign::read_invocation_totals(dir / "archive" / "invocations.json").invocations, 1);
+  const auto rows = hs::common::read_csv(dir / "dataset.csv").column("u_max_m_s");
+  fs::remove_all(dir / "runs");
+  fs::remove(dir / "dataset.csv");
+  const auto again = run("campaign " + dir.string());
+  EXPECT_EQ(again.code, 0) << again.output;
+  EXPECT_NE(again.output.find("2 done"), std::string::npos) << again.output;
+  EXPECT_FALSE(fs::exists(dir / "runs" / "re-0.1" / "console.txt")) << "a restored run must not run again";
+  EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").column("u_max_m_s"), rows);
 }
 
 TEST(Campaign, ReopenedRunsGoAgainAndLeaveTheDatasetUntilTheyFinish) {
@@ -217,6 +236,7 @@ TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
   std::ofstream(dir / "case.toml") << hs::test::replaced(hs::test::shipped_case_text("tube-drag"),
                                                         "max_jeffery_periods = 6 ", "max_time_s = 0.05 ");
   std::ofstream(dir / "campaign.toml") << "[campaign]\nname = \"stop\"\ntemplate = \"case.toml\"\njobs = 1\n"
+                                       << "archive = \"archive\"\n"
                                        << "[grid.re]\nkey = \"flow.reynolds\"\nvalues = [0.5]\n"
                                        << "[dataset]\nfile = \"dataset.csv\"\nrow_axes = \"re\"\n"
                                        << "[dataset.columns.cd_mean]\npointer = \"/results/cd_mean\"\n";
@@ -240,4 +260,13 @@ TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
   while (std::getline(in, line)) last = line;
   const auto reached = fmt::format("{:.3g} s", std::strtod(last.c_str(), nullptr));
   EXPECT_NE(status.output.find(reached), std::string::npos) << reached << "\n" << status.output;
+  // The stopped campaign also put the run's checkpoint into its (committed) archive: a fresh clone without runs/
+  // gets it back byte for byte, so the run resumes there instead of starting over.
+  const auto checkpoint = series.parent_path() / "checkpoint" / "state.rank0000.bin";
+  const std::string saved = hs::test::file_text(checkpoint);
+  EXPECT_TRUE(fs::exists(dir / "archive" / "re-0.5" / "checkpoint" / "state.rank0000.bin.gz"));
+  fs::remove_all(dir / "runs");
+  const auto restored = run("campaign " + dir.string() + " --status");
+  EXPECT_NE(restored.output.find("1 resumable"), std::string::npos) << restored.output;
+  EXPECT_EQ(hs::test::file_text(checkpoint), saved);
 }
