@@ -60,8 +60,13 @@ TubePlasmaConfig parse(hs::common::ConfigFile& file, bool quick) {
                .pressure_gradient_Pa_m = flow.number_in("pressure_gradient_Pa_m", -1e12, 0.0)};
   }
   c.cells_across = static_cast<int>(numerics.integer_in("cells_across_diameter", 4, 1000));
+  const auto coupling = pressure_coupling_from_name(numerics.one_of_or("pressure_coupling", {"piso", "projection"}, "piso"));
+  if (coupling == PressureCoupling::projection && numerics.has("correctors")) {   // PISO's only
+    numerics.fail("correctors", "applies to pressure_coupling = \"piso\" only (the projection corrects once)");
+  }
   c.piso = {.dt_s = numerics.positive("dt_s"),
             .correctors = static_cast<int>(numerics.integer_in_or("correctors", 1, 10, 2)),
+            .coupling = coupling,
             .max_courant = numerics.positive_or("max_courant", 1.0)};   // CFDEM keeps Co < 1 (methods note sec. 0)
   c.end_time_s = numerics.positive("end_time_s");
   c.fields_every_s = output.positive_or("fields_every_s", c.end_time_s);
@@ -140,6 +145,8 @@ nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, con
   summary["cells"] = solver.grid().cell_count();
   summary["steps"] = loop.step();
   summary["courant"] = solver.last_stats().courant;
+  summary["viscous_number"] = c.fluid.kinematic_viscosity_m2_s * c.piso.dt_s / (solver.grid().dx_m() * solver.grid().dx_m());
+  summary["pressure_coupling"] = c.piso.coupling == PressureCoupling::piso ? "piso" : "projection";
   summary["max_error_pct"] = c.max_error_pct;
   summary["passed"] = std::abs(error_pct) <= c.max_error_pct;
   summary["timings"] = loop.timings();

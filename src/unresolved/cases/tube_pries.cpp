@@ -106,6 +106,8 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   }
   c.cells_across = static_cast<int>(numerics.integer_in("cells_across_diameter", 4, 1000));
   c.dt_s = numerics.positive("dt_s");
+  c.pressure_coupling =
+      pressure_coupling_from_name(numerics.one_of_or("pressure_coupling", {"piso", "projection"}, "piso"));
   c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
   c.end_time_s = numerics.positive("end_time_s");
   c.average_from_fraction = numerics.number_in_or("average_from_fraction", 0.0, 0.95, 0.5);
@@ -162,7 +164,7 @@ FlowDrive drive_of(const TubePriesConfig& c) {
 
 /// Q_plasma: the same grid and pressure gradient without cells, run to the same end time.
 double plasma_flow_rate(const TubePriesConfig& c, const FvmGrid& grid) {
-  FvmSolver plasma(grid, c.fluid, {.dt_s = c.dt_s}, drive_of(c));
+  FvmSolver plasma(grid, c.fluid, {.dt_s = c.dt_s, .coupling = c.pressure_coupling}, drive_of(c));
   const long steps = std::max(1L, std::lround(c.end_time_s / c.dt_s));
   for (long s = 0; s < steps; ++s) plasma.step();
   return plasma.flow_rate_m3_s(2);
@@ -266,7 +268,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   const double r_tube = 0.5 * c.diameter_m;
   const Domain dem_domain{.box = {{-r_tube, -r_tube, 0.0}, {r_tube, r_tube, c.length_m}}, .periodic = {false, false, true}};
   DemSystem dem({.params = c.particles, .domain = dem_domain, .time_step_s = c.dt_s / c.n_coupling}, &tube.shape);
-  FvmSolver fluid(tube.grid, c.fluid, {.dt_s = c.dt_s}, drive_of(c));
+  FvmSolver fluid(tube.grid, c.fluid, {.dt_s = c.dt_s, .coupling = c.pressure_coupling}, drive_of(c));
   const double q_plasma = plasma_flow_rate(c, tube.grid);
   const double u_plasma = q_plasma / (std::numbers::pi * r_tube * r_tube);
   CfdDemCoupling coupling(fluid, dem,
@@ -351,10 +353,12 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
   j["outside_validity"] = c.drag.outside == hs::closures::OutsideValidity::clamp ? "clamp" : "extrapolate";
   j["self_induced_correction"] = c.self_induced_correction;
   j["suspension_viscosity"] = suspension_viscosity_name(c.suspension_viscosity);
+  j["pressure_coupling"] = c.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c.fluid.density_kg_m3, c.diameter_m, 2.0 * u_blood, mu)},
                  {"wall_gamma_plus", hs::common::shear_rate_plus(wall_shear_rate, r_tube, c.fluid.kinematic_viscosity_m2_s)},
                  {"confinement_d_over_D", c.particles.diameter_m / c.diameter_m},
-                 {"n_coupling", c.n_coupling}};
+                 {"n_coupling", c.n_coupling},
+                 {"viscous_number", c.fluid.kinematic_viscosity_m2_s * c.dt_s / std::pow(c.diameter_m / c.cells_across, 2)}};
   return res;
 }
 

@@ -15,6 +15,7 @@
 #include "unresolved/coupling/suspension_viscosity.hpp"
 #include "unresolved/dem/particle_params.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
+#include "unresolved/fvm/fvm_solver.hpp"
 
 namespace hs::unresolved {
 
@@ -27,6 +28,7 @@ struct TubePriesConfig {
   ParticleParams particles{};
   int cells_across = 10;
   double dt_s = 0.0;                     // CFD step
+  PressureCoupling pressure_coupling = PressureCoupling::piso;   // [numerics] pressure_coupling
   int n_coupling = 1;                    // DEM steps per CFD step
   double end_time_s = 0.0;
   double average_from_fraction = 0.5;    // Ht_d and Q are averaged over the last (1 - this) of the run

@@ -57,7 +57,8 @@ double shortley_weller(const auto& comp, int lid, int dir) {
 ///   (eps/dt + Ksl/rho) u_P + sum_l d_l (u_P - u_l) + sum_l F_l/(2V) (u_l - u_P)
 ///     = eps u_P^n/dt + (Ksl Us + f)/rho - eps G,     d_l = eps nu / dx^2 x shortley_weller(l),
 /// where a wall link l holds u_l = u_wall at the fraction theta_l of the link.
-/// The PISO diagonal A is the symmetric part (time, Ksl, viscous); convection goes to H.
+/// The PISO diagonal A is the symmetric part (time, Ksl, viscous); convection goes to H. The projection uses
+/// A0 = eps/dt + Ksl/rho instead, and H/A0 = u* + eps G p^n / A0 once the predictor has solved for u*.
 void FvmSolver::assemble_momentum(int c, bool convection) {
   Component& comp = comp_[static_cast<std::size_t>(c)];
   const long rows = static_cast<long>(comp.node.size());
@@ -95,7 +96,8 @@ void FvmSolver::assemble_momentum(int c, bool convection) {
       }
     }
     val[slot[0]] = diag + conv_diag;
-    comp.a[r] = diag;
+    // The projection's diagonal leaves out the viscous links (see PressureCoupling).
+    comp.a[r] = piso_.coupling == PressureCoupling::projection ? e / dt + ks / rho : diag;
     comp.b[r] = rhs;
   }
 }

@@ -13,6 +13,12 @@ namespace hs::unresolved {
 
 using hs::common::Vec3;
 
+PressureCoupling pressure_coupling_from_name(std::string_view name) {
+  if (name == "piso") return PressureCoupling::piso;
+  if (name == "projection") return PressureCoupling::projection;
+  throw hs::common::ConfigError(fmt::format("unknown pressure coupling '{}': use \"projection\" or \"piso\"", name));
+}
+
 FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const PisoSettings& piso, const FlowDrive& drive,
                      MPI_Comm comm)
     : grid_(grid), fluid_(fluid), piso_(piso), drive_(drive), h_(grid.dx_m()), pressure_(comm) {
@@ -23,6 +29,9 @@ FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const Pi
   if (!(piso.dt_s > 0.0) || piso.correctors < 1 || !(piso.max_courant > 0.0)) {
     throw hs::common::ConfigError(fmt::format("FVM: dt_s = {} must be > 0, correctors = {} >= 1, max_courant = {} > 0",
                                               piso.dt_s, piso.correctors, piso.max_courant));
+  }
+  if (piso.coupling == PressureCoupling::projection && !piso.momentum_predictor) {
+    throw hs::common::ConfigError("FVM: the projection needs the momentum predictor (its u* is what is projected)");
   }
   if (drive.mode != FlowDrive::Mode::none && !grid.periodic(drive.axis)) {
     throw hs::common::ConfigError(fmt::format("FVM: the flow drive needs a periodic axis; axis {} is not periodic",
@@ -139,7 +148,8 @@ void FvmSolver::step() {
     assemble_momentum(c);
     if (piso_.momentum_predictor) solve_momentum(c);
   }
-  for (int corr = 0; corr < piso_.correctors; ++corr) pressure_corrector(corr + 1 == piso_.correctors);
+  const int correctors = piso_.coupling == PressureCoupling::projection ? 1 : piso_.correctors;
+  for (int corr = 0; corr < correctors; ++corr) pressure_corrector(corr + 1 == correctors);
   update_fluxes();
   if (drive_.mode == FlowDrive::Mode::flow_rate) correct_flow_rate();
   time_s_ += piso_.dt_s;

@@ -29,7 +29,8 @@ class Slab final : public hs::common::Shape {
 
 double profile(double y) { return 6.0 * kMean * y * (kHeight - y) / (kHeight * kHeight); }
 
-TEST(ChannelInletOutlet, PoiseuilleProfileIsKeptWithTheAnalyticPressureDrop) {
+/// Runs the channel for `steps` with `coupling` and checks mass, outlet profile and pressure drop.
+void check_channel(hs::unresolved::PressureCoupling coupling, int steps) {
   const int across = 8;
   const double h = kHeight / across;
   const Slab slab;
@@ -40,9 +41,8 @@ TEST(ChannelInletOutlet, PoiseuilleProfileIsKeptWithTheAnalyticPressureDrop) {
   spec.sides[4].type = SideType::periodic;
   spec.sides[5].type = SideType::periodic;
   const FvmGrid grid(slab, spec);
-  // dt = 5e-3 s: Courant 0.6 on the centreline; 60 steps are 30 viscous times H^2/nu.
-  FvmSolver solver(grid, {.density_kg_m3 = kRho, .kinematic_viscosity_m2_s = kNu}, {.dt_s = 5e-3}, {});
-  for (int s = 0; s < 60; ++s) solver.step();
+  FvmSolver solver(grid, {.density_kg_m3 = kRho, .kinematic_viscosity_m2_s = kNu}, {.dt_s = 5e-3, .coupling = coupling}, {});
+  for (int s = 0; s < steps; ++s) solver.step();
   // Mass: what enters through the inlet faces (the profile at their centres) leaves at the outlet and
   // crosses every x-section, to the pressure solver's tolerance.
   double q_in = 0.0;
@@ -63,6 +63,18 @@ TEST(ChannelInletOutlet, PoiseuilleProfileIsKeptWithTheAnalyticPressureDrop) {
   EXPECT_NEAR(dpdx / exact, 1.0, 1e-4);
   // p = 0 on the outlet face: the last cell sits half a cell upstream of it.
   EXPECT_NEAR(solver.cell_pressure_Pa(grid.cells()[0] - 1, 3, 0) / (-0.5 * h * exact), 1.0, 1e-3);
+}
+
+// dt = 5e-3 s: Courant 0.6 on the centreline, viscous number nu dt / dx^2 = 32; 60 steps are 30 viscous times H^2/nu.
+TEST(ChannelInletOutlet, PoiseuilleProfileIsKeptWithTheAnalyticPressureDrop) {
+  check_channel(hs::unresolved::PressureCoupling::piso, 60);
+}
+
+// The projection reaches the same steady state more slowly here: at the outlet its increment is held at zero, which
+// the rotational correction does not undo, so after 60 steps 3e-5 of the profile is left (measured), after 100
+// below 1e-5.
+TEST(ChannelInletOutlet, PoiseuilleProfileIsKeptWithTheProjection) {
+  check_channel(hs::unresolved::PressureCoupling::projection, 100);
 }
 
 }  // namespace

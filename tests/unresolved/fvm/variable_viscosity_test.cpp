@@ -29,9 +29,8 @@ double two_layer_flow_rate(double a, double m) {
 }
 
 /// Steady flow rate in a periodic tube (20 cells across, 4 long) with factor m inside radius a (m = 1 outside);
-/// a >= R: uniform. dt = 0.024 R^2 / nu keeps the viscous number m nu dt / dx^2 at 7.2 in the core: the solver has
-/// a mode that grows from round-off at large viscous numbers (measured, uniform tube: steady over 1500 steps at 24,
-/// blown up within 150 steps at 60 and 240; with this 3x core: steady at 7.2, blown up at 18). 400 steps are
+/// a >= R: uniform. dt = 0.024 R^2 / nu keeps the viscous number m nu dt / dx^2 at 7.2 in the core, where PISO too
+/// is stable (pressure_coupling_test: with this 3x core PISO blew up at 18; the default projection does not). 400 steps are
 /// 9.6 viscous times R^2 / nu of the plasma: the slowest mode is damped by e^-50.
 double flow_rate(double a, double m) {
   const double length = 4 * (2.0 * kRadius / 20);
