@@ -2,6 +2,7 @@
 // Fitting a closure from a dataset and writing the closure file and its companions.
 #include "closures/closure_fit.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -47,8 +48,30 @@ Table load_dataset(const FitRequest& r) {
     }
     return v;
   };
+  // A derived feature: its expression evaluated on each row (variables: the dataset's columns).
+  auto derived = [&](const std::string& name, const std::string& text) {
+    hsr::Expression e;
+    try {
+      e = hsr::parse_infix(text, csv.columns);
+    } catch (const std::exception& ex) {
+      throw ConfigError(fmt::format("{}: [data.derived] {} = \"{}\": {} (variables: the columns of {})", r.fit_file.string(),
+                                    name, text, ex.what(), r.dataset.string()));
+    }
+    std::vector<double> v;
+    for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+      v.push_back(e.evaluate(csv.rows[i].data()));
+      if (!std::isfinite(v.back())) {
+        throw ConfigError(fmt::format("{}: [data.derived] {} is not a finite number in row {} of {}", r.fit_file.string(),
+                                      name, i + 1, r.dataset.string()));
+      }
+    }
+    return v;
+  };
   Table t;
-  for (const auto& f : r.features) t.x.push_back(column(f, "features"));
+  for (const auto& f : r.features) {
+    const auto d = std::find_if(r.derived.begin(), r.derived.end(), [&](const auto& p) { return p.first == f; });
+    t.x.push_back(d != r.derived.end() ? derived(d->first, d->second) : column(f, "features"));
+  }
   t.y = column(r.target, "target");
   if (t.y.size() < 10) throw ConfigError(fmt::format("{}: {} rows; at least 10 are needed", r.dataset.string(), t.y.size()));
   return t;

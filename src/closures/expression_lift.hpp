@@ -27,19 +27,26 @@ class ExpressionLift final : public LiftClosure {
       : LiftClosure(f->file().name, f->validity()), formula_(std::move(f)) {
     const auto& vars = formula_->file().variables;
     for (std::size_t j = 0; j < vars.size(); ++j) {
-      if (vars[j] == "gamma_plus" && formula_->outside() == OutsideValidity::clamp) fade_below_ = formula_->file().validity[j].lo;
+      if ((vars[j] == "gamma_plus" || vars[j] == "re_shear") && formula_->outside() == OutsideValidity::clamp) {
+        shear_ = vars[j] == "gamma_plus" ? &ClosureInputs::gamma_plus : &ClosureInputs::re_shear;
+        fade_below_ = formula_->file().validity[j].lo;
+      }
     }
   }
-  /// Clamped below its box in gamma+, C_l fades linearly to zero with gamma+: the lift is odd in the radial position
-  /// and vanishes on a tube's axis, where gamma+ (linear in r in Poiseuille flow) does too. Holding the edge value
-  /// instead keeps a finite inward lift on the axis and piles the cells up there.
+  /// Clamped below its box in its shear variable (gamma+ or Re_shear, both proportional to the shear rate), C_l fades
+  /// linearly to zero with it: the lift is odd in the radial position and vanishes on a tube's axis, where the shear
+  /// rate (linear in r in Poiseuille flow) does too. Holding the edge value instead keeps a finite inward lift on the
+  /// axis and piles the cells up there.
   [[nodiscard]] double compute_lift_coefficient(const LiftInputs& in) const override {
     const double cl = (*formula_)(in);
-    return in.gamma_plus < fade_below_ ? cl * std::max(in.gamma_plus, 0.0) / fade_below_ : cl;
+    if (shear_ == nullptr) return cl;
+    const double shear = in.*shear_;
+    return shear < fade_below_ ? cl * std::max(shear, 0.0) / fade_below_ : cl;
   }
 
   std::unique_ptr<LearnedFormula> formula_;
-  double fade_below_ = 0.0;   // gamma+ below which C_l fades to zero (the box's lower edge; 0: no fading)
+  double ClosureInputs::*shear_ = nullptr;   // the shear variable among the inputs (none: no fading)
+  double fade_below_ = 0.0;                  // below it C_l fades to zero (the box's lower edge)
 };
 
 }  // namespace hs::closures

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "regression/model_selection.hpp"
@@ -28,6 +29,9 @@ struct FitRequest {
   std::filesystem::path dataset;
   std::string target;
   std::vector<std::string> features;
+  /// [data.derived]: features computed per row from the dataset's columns, name -> expression (infix, as in closure
+  /// files), e.g. re_shear = "gamma_plus * 0.0501" (gammadot d_p^2 / nu from gammadot R_c^2 / nu in one tube).
+  std::vector<std::pair<std::string, std::string>> derived;
   std::vector<std::string> definitions;   // one per feature
   std::string name, kind, output;
   std::string reference_velocity = "slip";   // lift only

@@ -76,3 +76,14 @@ TEST(ExpressionLift, ClampedBelowItsShearBoxTheLiftFadesToZeroOnTheAxis) {
   EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.gamma_plus = 0.5}), 0.1);           // above: held at the edge
   EXPECT_DOUBLE_EQ(raw->lift_coefficient({.gamma_plus = 0.05}), -0.4);
 }
+
+TEST(ExpressionLift, AShearReynoldsNumberFadesTheSameWay) {
+  // Re_shear = gammadot d_p^2 / nu is proportional to the shear rate as gamma+ is: the same fade below its box.
+  const fs::path p = fs::temp_directory_path() / "hs_learned_lift_reshear.toml";
+  std::ofstream(p) << "name = \"cl\"\nkind = \"lift\"\noutput = \"C_l\"\nexpression = \"2*re_shear - 0.5\"\n"
+                      "[variables]\nre_shear = \"Re_shear\"\n[validity]\nre_shear = [0.1, 0.3]\n";
+  const auto clamped = hc::make_lift_closure({.model = "expression", .file = p});
+  EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.re_shear = 0.2}), -0.1);
+  EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.re_shear = 0.05}), -0.3 * 0.5);
+  EXPECT_DOUBLE_EQ(clamped->lift_coefficient({.re_shear = 0.0}), 0.0);
+}

@@ -134,14 +134,12 @@ double FvmSolver::cell_divergence(const std::array<BlockField<double>, 3>& u, lo
     div += face_average(eps_, ax, hi) * ap[static_cast<std::size_t>(hi)] * f[static_cast<std::size_t>(hi)] -
            face_average(eps_, ax, idx) * ap[static_cast<std::size_t>(idx)] * f[static_cast<std::size_t>(idx)];
   }
-  return div / h_;
+  // A product, as it always was: the particle runs are chaotic, and div / h_ (a last-bit change) moved the committed
+  // tube-pries case from Ht_d +2.4%, mu_rel +5.1% to +3.4%, +3.1%.
+  return div * (1.0 / h_);
 }
 
 void FvmSolver::pressure_corrector(bool final) {
-  const bool projection = piso_.coupling == PressureCoupling::projection;
-  if (projection) {
-    for (int c = 0; c < 3; ++c) scatter(c, comp_[static_cast<std::size_t>(c)].x, u_[static_cast<std::size_t>(c)]);   // u*
-  }
   for (int c = 0; c < 3; ++c) {
     Component& comp = comp_[static_cast<std::size_t>(c)];
     if (comp.node.empty()) continue;
@@ -160,8 +158,8 @@ void FvmSolver::pressure_corrector(bool final) {
   stats_.pressure_iterations += pressure_.solve(p_rhs_, p_x_, tol);
   for (long r = 0; r < rows; ++r) p_[static_cast<std::size_t>(p_cell_[static_cast<std::size_t>(r)])] = p_x_[static_cast<std::size_t>(r)];
   fill_pressure_ghosts();
-  for (int c = 0; c < 3; ++c) {
   const double inv_h = 1.0 / h_;
+  for (int c = 0; c < 3; ++c) {
     Component& comp = comp_[static_cast<std::size_t>(c)];
     const long n = static_cast<long>(comp.node.size());
     const long sc = p_.stride(c);
@@ -172,23 +170,6 @@ void FvmSolver::pressure_corrector(bool final) {
       comp.x[r] = comp.hbya[r] - face_average(eps_, c, idx) * grad_p / comp.a[r];
     }
   }
-  if (!projection) return;
-  // Rotational form (Timmermans, Minev & van de Vosse 1996): p^{n+1} = p^n + phi - nu div(u*). The projection's
-  // increment phi carries only the A0 part of the momentum operator M = A0 + viscous; the viscous part's share of the
-  // exact (Uzawa) increment, -M div(u*) / (eps L) - phi with L = -div grad, is -nu div(u*) when the operators commute (uniform
-  // coefficients, periodic): the pressure is then exact after one step instead of relaxing by nu dt L / (1 + nu dt L)
-  // per step, which is slow for short pressure waves at large viscous numbers.
-  const double nu = fluid_.kinematic_viscosity_m2_s;
-#pragma omp parallel for schedule(static) if (rows > kParallelRows)
-  for (long r = 0; r < rows; ++r) {
-    if (r == p_ref_row_) continue;   // the pinned level stays
-    const long idx = p_cell_[static_cast<std::size_t>(r)];
-    const double e = eps_[static_cast<std::size_t>(idx)];
-    const double m = variable_viscosity_ ? visc_[static_cast<std::size_t>(idx)] : 1.0;
-    // The continuity residual of u*: div(eps u*) + d(eps)/dt (moving particles change eps).
-    p_[static_cast<std::size_t>(idx)] -= nu * m * (cell_divergence(u_, idx) + deps_dt_[static_cast<std::size_t>(idx)]) / e;
-  }
-  fill_pressure_ghosts();
 }
 
 }  // namespace hs::unresolved

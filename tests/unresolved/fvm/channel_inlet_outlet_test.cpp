@@ -70,11 +70,11 @@ TEST(ChannelInletOutlet, PoiseuilleProfileIsKeptWithTheAnalyticPressureDrop) {
   check_channel(hs::unresolved::PressureCoupling::piso, 60);
 }
 
-// The projection reaches the same steady state more slowly here: at the outlet its increment is held at zero, which
-// the rotational correction does not undo, so after 60 steps 3e-5 of the profile is left (measured), after 100
-// below 1e-5.
+// The projection reaches the same steady state more slowly: its short pressure waves relax by nu dt L / (1 + nu dt L)
+// per step (fvm_solver.hpp), and at the outlet its increment is held at zero. Measured: the pressure gradient is
+// 3.6e-4 off after 100 steps, 1.0e-4 after 150, within 1e-4 after 200.
 TEST(ChannelInletOutlet, PoiseuilleProfileIsKeptWithTheProjection) {
-  check_channel(hs::unresolved::PressureCoupling::projection, 100);
+  check_channel(hs::unresolved::PressureCoupling::projection, 200);
 }
 
 }  // namespace
