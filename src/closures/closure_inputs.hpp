@@ -13,6 +13,7 @@ namespace hs::closures {
 struct ClosureInputs {
   double re_p = 0.0;         // particle Reynolds number d_p |u_p - u_f| / nu
   double re_shear = 0.0;     // shear Reynolds number gammadot d_p^2 / nu (Saffman / Mei lift)
+  double shear_ratio = 0.0;  // Re_shear / Re_p = gammadot d_p / |u|, u the closure's velocity (inertial lift)
   double gamma_plus = 0.0;   // dimensionless shear rate gammadot R_c^2 / nu (R_c: tube radius)
   double u_r_plus = 0.0;     // dimensionless slip (u_p - u_f) / u_av
   double di = 0.0;           // deformation index (L - B) / (L + B) of the RBC
@@ -35,9 +36,10 @@ struct InputVariable {
 };
 
 /// The single list of closure input names; a closure file may use no other.
-inline constexpr std::array<InputVariable, 6> input_variables{{
+inline constexpr std::array<InputVariable, 7> input_variables{{
     {"re_p", &ClosureInputs::re_p, "particle Reynolds number d_p |u_p - u_f| / nu"},
     {"re_shear", &ClosureInputs::re_shear, "shear Reynolds number gammadot d_p^2 / nu"},
+    {"shear_ratio", &ClosureInputs::shear_ratio, "shear to velocity ratio Re_shear / Re_p = gammadot d_p / |u|"},
     {"gamma_plus", &ClosureInputs::gamma_plus, "dimensionless shear rate gammadot R_c^2 / nu"},
     {"u_r_plus", &ClosureInputs::u_r_plus, "dimensionless slip velocity (u_p - u_f) / u_av"},
     {"di", &ClosureInputs::di, "deformation index (L - B) / (L + B) of the red blood cell"},

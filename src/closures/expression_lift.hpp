@@ -27,15 +27,17 @@ class ExpressionLift final : public LiftClosure {
       : LiftClosure(f->file().name, f->validity()), formula_(std::move(f)) {
     const auto& vars = formula_->file().variables;
     for (std::size_t j = 0; j < vars.size(); ++j) {
-      if ((vars[j] == "gamma_plus" || vars[j] == "re_shear") && formula_->outside() == OutsideValidity::clamp) {
-        shear_ = vars[j] == "gamma_plus" ? &ClosureInputs::gamma_plus : &ClosureInputs::re_shear;
+      const auto input = find_input(vars[j]);
+      const bool shear = vars[j] == "gamma_plus" || vars[j] == "re_shear" || vars[j] == "shear_ratio";
+      if (shear && input && formula_->outside() == OutsideValidity::clamp) {
+        shear_ = input->field;
         fade_below_ = formula_->file().validity[j].lo;
       }
     }
   }
-  /// Clamped below its box in its shear variable (gamma+ or Re_shear, both proportional to the shear rate), C_l fades
-  /// linearly to zero with it: the lift is odd in the radial position and vanishes on a tube's axis, where the shear
-  /// rate (linear in r in Poiseuille flow) does too. Holding the edge value instead keeps a finite inward lift on the
+  /// Clamped below its box in its shear variable (gamma+, Re_shear or the shear ratio, all proportional to the shear
+  /// rate), C_l fades linearly to zero with it: the lift is odd in the radial position and vanishes on a tube's axis,
+  /// where the shear rate (linear in r in Poiseuille flow) does too. Holding the edge value instead keeps a finite inward lift on the
   /// axis and piles the cells up there.
   [[nodiscard]] double compute_lift_coefficient(const LiftInputs& in) const override {
     const double cl = (*formula_)(in);
@@ -45,7 +47,7 @@ class ExpressionLift final : public LiftClosure {
   }
 
   std::unique_ptr<LearnedFormula> formula_;
-  double ClosureInputs::*shear_ = nullptr;   // the shear variable among the inputs (none: no fading)
+  double ClosureInputs::*shear_ = nullptr;   // the shear variable among the inputs (nullptr: no fading)
   double fade_below_ = 0.0;                  // below it C_l fades to zero (the box's lower edge)
 };
 

@@ -2,6 +2,8 @@
 // Reading FIT.toml into a FitRequest.
 #include "closures/fit_request.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "closures/closure_inputs.hpp"
@@ -97,7 +99,10 @@ void read_closure(ConfigSection root, FitRequest& r) {
     if (r.kind != "generic" && !input) {
       root.section("data").fail("features", fmt::format("\"{}\" is not a closure input; use kind = \"generic\"", f));
     }
-    const std::string fallback = input ? std::string(input->definition) : fmt::format("column {} of the dataset", f);
+    const auto derived = std::find_if(r.derived.begin(), r.derived.end(), [&](const auto& d) { return d.first == f; });
+    const std::string fallback = input                       ? std::string(input->definition)
+                                 : derived != r.derived.end() ? derived->second
+                                                              : fmt::format("column {} of the dataset", f);
     r.definitions.push_back(vars.string_or(f, fallback));
   }
 }

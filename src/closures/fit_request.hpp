@@ -30,7 +30,7 @@ struct FitRequest {
   std::string target;
   std::vector<std::string> features;
   /// [data.derived]: features computed per row from the dataset's columns, name -> expression (infix, as in closure
-  /// files), e.g. re_shear = "gamma_plus * 0.0501" (gammadot d_p^2 / nu from gammadot R_c^2 / nu in one tube).
+  /// files), e.g. shear_ratio = "gamma_plus * 0.0501 / re_p" (gammadot d_p / u from gammadot R_c^2 / nu in one tube).
   std::vector<std::pair<std::string, std::string>> derived;
   std::vector<std::string> definitions;   // one per feature
   std::string name, kind, output;

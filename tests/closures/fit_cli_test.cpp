@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -58,4 +59,31 @@ TEST(FitCli, BadFitFileExitsWithCode2) {
   const auto r = run("fit " + bad.string());
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("populaton_size"), std::string::npos) << r.output;
+}
+
+TEST(FitCli, DerivedFeaturesAreComputedFromTheDatasetColumns) {
+  // [data.derived] y2 = "2 * x": a feature the dataset does not have, evaluated per row; y = x^2 + 1 is found in it.
+  std::string csv = "x,y\n";
+  for (int i = 1; i <= 20; ++i) csv += std::to_string(0.1 * i) + "," + std::to_string(0.01 * i * i + 1.0) + "\n";
+  const auto data = write("hs_cli_derived.csv", csv);
+  const auto fit = write("hs_cli_derived_fit.toml", "[data]\nfile = \"" + data.string() + "\"\ntarget = \"y\"\n"
+                                                    "features = [\"x2\"]\n[data.derived]\nx2 = \"2 * x\"\n"
+                                                    "[closure]\nname = \"y\"\nkind = \"generic\"\n"
+                                                    "[search]\ngenerations = 5\npopulation_size = 100\nseed = 1\n");
+  const fs::path out = fs::temp_directory_path() / "hs_fit_cli_derived";
+  fs::remove_all(out);
+  const auto r = run("fit " + fit.string() + " --no-plot -q -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(out / "y.toml");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("x2 = \"2 * x\""), std::string::npos) << text;   // its definition is its formula
+  EXPECT_NE(text.find("expression = \"1 + 0.25*(x2*x2)\""), std::string::npos) << text;   // y = 1 + (x2 / 2)^2
+  // A derived feature naming no column is a configuration error, exit code 2.
+  const auto bad = write("hs_cli_derived_bad.toml", "[data]\nfile = \"" + data.string() + "\"\ntarget = \"y\"\n"
+                                                    "features = [\"x2\"]\n[data.derived]\nx2 = \"2 * z\"\n"
+                                                    "[closure]\nname = \"y\"\nkind = \"generic\"\n");
+  fs::remove_all(out.string() + "_bad");
+  const auto b = run("fit " + bad.string() + " --no-plot -q -o " + (out.string() + "_bad"));
+  EXPECT_EQ(b.code, 2) << b.output;
+  EXPECT_NE(b.output.find("data.derived"), std::string::npos) << b.output;
 }

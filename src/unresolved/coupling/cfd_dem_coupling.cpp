@@ -92,6 +92,7 @@ hs::closures::ClosureInputs CfdDemCoupling::inputs(std::size_t i, const Vec3& uf
   hs::closures::ClosureInputs in;
   in.re_p = hs::common::particle_reynolds(d, norm(slip), nu);
   in.re_shear = gd * d * d / nu;   // Saffman/Mei shear Reynolds number (closure_inputs.hpp)
+  in.shear_ratio = in.re_p > 0.0 ? in.re_shear / in.re_p : 0.0;
   in.gamma_plus = hs::common::shear_rate_plus(gd, settings_.tube_radius_m, nu);
   in.u_r_plus = mean_velocity_m_s_ > 0.0
                     ? hs::common::slip_velocity_plus(particle_velocity(p, i)[settings_.axis], uf[settings_.axis], mean_velocity_m_s_)
@@ -148,7 +149,10 @@ void CfdDemCoupling::particle_forces() {
       const bool flow = closures_.lift->reference_velocity() == hs::closures::LiftVelocity::flow;
       const double ur = flow ? norm(uf) : norm(uf - particle_velocity(p, i));
       hs::closures::LiftInputs lift_in = in;
-      if (flow) lift_in.re_p = hs::common::particle_reynolds(d, ur, fluid_.fluid().kinematic_viscosity_m2_s);
+      if (flow) {
+        lift_in.re_p = hs::common::particle_reynolds(d, ur, fluid_.fluid().kinematic_viscosity_m2_s);
+        lift_in.shear_ratio = lift_in.re_p > 0.0 ? lift_in.re_shear / lift_in.re_p : 0.0;
+      }
       lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * radial_unit(x);
       f = f + lift;
       for (int m = 0; m < kMarkersPerSphere; ++m) lift_reaction_N_[map_.cell(i, m)] -= lift / kMarkersPerSphere;
