@@ -111,14 +111,14 @@ std::string failure_reason(const RunRecord& r, int code) {
 CampaignRunner::CampaignRunner(CampaignSpec spec, CampaignOptions options)
     : spec_(std::move(spec)), options_(std::move(options)) {}
 
-std::vector<RunRecord> CampaignRunner::records() const {
+std::vector<RunRecord> CampaignRunner::records(bool restore) const {
   std::vector<RunRecord> out;
   for (const auto& p : grid_points(spec_)) {
     const std::string name = run_name(spec_, p);
     const auto dir = spec_.dir / "runs" / name;
     std::filesystem::create_directories(dir);
     RunRecord r = read_run_record(dir, name);
-    if (!spec_.archive_dir.empty() && restore_run(r, spec_.archive_dir)) r = read_run_record(dir, name);
+    if (restore && !spec_.archive_dir.empty() && restore_run(r, spec_.archive_dir)) r = read_run_record(dir, name);
     // A run never started follows campaign.toml as it is now (an override added, the template edited); one that
     // has started keeps the case it started with.
     const bool never_started = r.state == RunState::pending && r.attempts == 0 && !std::filesystem::exists(r.output_dir());
@@ -129,19 +129,25 @@ std::vector<RunRecord> CampaignRunner::records() const {
 }
 
 std::string CampaignRunner::status_table() const {
-  const auto runs = records();
+  const auto runs = records(false);   // looks, writes nothing from the archive
   std::map<RunState, int> count;
   std::string out = fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", "run", "state", "wall", "attempts",
                                 "simulated", "reason");
   for (const auto& r : runs) {
-    ++count[r.state];
-    out += fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", r.name, to_string(r.state),
+    // Not yet brought back from the archive (a fresh clone): the next `hemoscale campaign` restores it.
+    const bool archived = !spec_.archive_dir.empty() && r.state == RunState::pending && r.attempts == 0 &&
+                          !std::filesystem::exists(r.output_dir()) && std::filesystem::exists(spec_.archive_dir / r.name);
+    const bool archived_done = archived && std::filesystem::exists(spec_.archive_dir / r.name / "status.json");
+    ++count[archived ? (archived_done ? RunState::done : RunState::resumable) : r.state];
+    const std::string state = archived ? (archived_done ? "done*" : "resumable*") : to_string(r.state);
+    out += fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", r.name, state,
                        r.wall_s > 0 ? common::Progress::format_duration(r.wall_s) : "", r.attempts, simulated_time(r),
                        r.reason);
   }
-  out += fmt::format("{} runs: {} done, {} failed, {} running, {} resumable, {} pending\n", runs.size(),
+  out += fmt::format("{} runs: {} done, {} failed, {} running, {} resumable, {} pending{}\n", runs.size(),
                      count[RunState::done], count[RunState::failed], count[RunState::running],
-                     count[RunState::resumable], count[RunState::pending]);
+                     count[RunState::resumable], count[RunState::pending],
+                     spec_.archive_dir.empty() ? "" : " (*: in the archive, brought back by the next `hemoscale campaign`)");
   double wall_total = 0.0;
   for (const auto& r : runs) wall_total += r.wall_s;
   const int left = count[RunState::running] + count[RunState::resumable] + count[RunState::pending];
@@ -163,7 +169,7 @@ std::string CampaignRunner::status_table() const {
 }
 
 int CampaignRunner::run() {
-  auto runs = records();
+  auto runs = records(true);
   std::vector<std::size_t> queue;
 
   int finished = 0;
@@ -174,6 +180,7 @@ int CampaignRunner::run() {
       runs[i].state = resumable ? RunState::resumable : RunState::pending;   // pending: afresh, its output set aside
       runs[i].reason.clear();
       std::filesystem::remove(runs[i].dir / "status.json");   // on disk too: an interrupted resume stays reopened
+      if (!spec_.archive_dir.empty()) forget_archived_run(runs[i], spec_.archive_dir);   // and in the archive
       write_run_status(runs[i]);
     }
     if (runs[i].state == RunState::pending || runs[i].state == RunState::resumable) queue.push_back(i);
@@ -255,6 +262,7 @@ int CampaignRunner::run() {
     write_run_status(r);
     if (!spec_.archive_dir.empty() && r.state == RunState::done) archive_finished_run(r, spec_.archive_dir);
     if (!spec_.archive_dir.empty() && r.state == RunState::resumable) archive_checkpoint(r, spec_.archive_dir);
+    if (!spec_.archive_dir.empty() && r.state == RunState::failed) forget_archived_run(r, spec_.archive_dir);
     progress.note(fmt::format("{}: {} after {}{}", r.name, to_string(r.state),
                               common::Progress::format_duration(r.wall_s), r.reason.empty() ? "" : " (" + r.reason + ")"));
     // A run stopped on request or killed is not finished: the progress line (and its ETA) counts only those that are.

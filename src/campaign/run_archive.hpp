@@ -11,7 +11,7 @@
 
 namespace hs::campaign {
 
-/// At most this many time-series rows are archived per run (every k-th sample, the last one always kept): the
+/// About this many time-series rows are archived per run (every k-th sample, plus the last one): the
 /// period averages are in summary.json; the series is for plots (tools/plot_periods.py).
 inline constexpr std::size_t kArchivedSeriesRows = 1000;
 
@@ -21,9 +21,14 @@ void archive_finished_run(const RunRecord& run, const std::filesystem::path& arc
 /// Copies the checkpoint of an unfinished run into `archive`/<name>/checkpoint/ (gzip); does nothing without one.
 void archive_checkpoint(const RunRecord& run, const std::filesystem::path& archive);
 
+/// Drops a run's archived result and checkpoint (a run reopened or failed: the archive must not bring it back as
+/// done or resumable).
+void forget_archived_run(const RunRecord& run, const std::filesystem::path& archive);
+
 /// For a run its own folder knows nothing about (a fresh clone): brings back from `archive` what is there, a
 /// finished run (summary.json and status.json, so it is done and its dataset row is written) or a checkpoint (so it
-/// resumes). Returns true when something was restored; the caller reads the record again.
+/// resumes), and the case it ran. Returns true when something was restored; the caller reads the record again.
+/// ConfigError for an archive entry that cannot be read.
 bool restore_run(const RunRecord& run, const std::filesystem::path& archive);
 
 }  // namespace hs::campaign

@@ -57,8 +57,19 @@ Table load_dataset(const FitRequest& r) {
       throw ConfigError(fmt::format("{}: [data.derived] {} = \"{}\": {} (variables: the columns of {})", r.fit_file.string(),
                                     name, text, ex.what(), r.dataset.string()));
     }
+    if (csv.column_index(name) >= 0) {
+      throw ConfigError(fmt::format("{}: [data.derived] {}: {} has a column of that name; name the derived feature "
+                                    "otherwise", r.fit_file.string(), name, r.dataset.string()));
+    }
     std::vector<double> v;
     for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+      // The operators are protected (a division by ~0 gives 1): a missing input must not slip through as a number.
+      for (const std::size_t k : e.variables()) {
+        if (!std::isfinite(csv.rows[i][k])) {
+          throw ConfigError(fmt::format("{}: column \"{}\" row {} is not a finite number ([data.derived] {})",
+                                        r.dataset.string(), csv.columns[k], i + 1, name));
+        }
+      }
       v.push_back(e.evaluate(csv.rows[i].data()));
       if (!std::isfinite(v.back())) {
         throw ConfigError(fmt::format("{}: [data.derived] {} is not a finite number in row {} of {}", r.fit_file.string(),

@@ -81,7 +81,12 @@ void read_data(ConfigSection root, FitRequest& r) {
   r.target = data.string("target");
   r.features = data.strings("features");
   auto derived = data.section_or_empty("derived");
-  for (const auto& name : derived.keys()) r.derived.emplace_back(name, derived.string(name));
+  for (const auto& name : derived.keys()) {
+    if (std::find(r.features.begin(), r.features.end(), name) == r.features.end()) {
+      derived.fail(name, "is not among [data] features (a derived feature is computed only to be fitted on)");
+    }
+    r.derived.emplace_back(name, derived.string(name));
+  }
   r.validation.test_fraction = data.number_in_or("test_fraction", 0.0, 0.9, 0.2);
   r.validation.folds = static_cast<int>(data.integer_in_or("folds", 0, 100, 5));
 }

@@ -266,7 +266,22 @@ TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
   const std::string saved = hs::test::file_text(checkpoint);
   EXPECT_TRUE(fs::exists(dir / "archive" / "re-0.5" / "checkpoint" / "state.rank0000.bin.gz"));
   fs::remove_all(dir / "runs");
-  const auto restored = run("campaign " + dir.string() + " --status");
-  EXPECT_NE(restored.output.find("1 resumable"), std::string::npos) << restored.output;
+  const auto archived = run("campaign " + dir.string() + " --status");   // --status only looks
+  EXPECT_NE(archived.output.find("resumable*"), std::string::npos) << archived.output;
+  EXPECT_FALSE(fs::exists(checkpoint));
+  const auto restored = run("campaign " + dir.string() + " --max-runs 0");   // restores, starts nothing
+  EXPECT_EQ(restored.code, 0) << restored.output;
+  EXPECT_EQ(hs::test::file_text(checkpoint), saved);
+  EXPECT_NE(run("campaign " + dir.string() + " --status").output.find("1 resumable"), std::string::npos);
+  // A truncated archive file is one clear error (exit 2), and the next try restores again once it is fixed.
+  fs::remove_all(dir / "runs");
+  const auto gz = dir / "archive" / "re-0.5" / "checkpoint" / "state.rank0000.bin.gz";
+  const std::string whole = hs::test::file_text(gz);
+  std::ofstream(gz, std::ios::binary | std::ios::trunc) << whole.substr(0, whole.size() / 2);
+  const auto truncated = run("campaign " + dir.string() + " --max-runs 0");
+  EXPECT_EQ(truncated.code, 2) << truncated.output;
+  EXPECT_NE(truncated.output.find("not a complete gzip file"), std::string::npos) << truncated.output;
+  std::ofstream(gz, std::ios::binary | std::ios::trunc) << whole;
+  EXPECT_EQ(run("campaign " + dir.string() + " --max-runs 0").code, 0);
   EXPECT_EQ(hs::test::file_text(checkpoint), saved);
 }

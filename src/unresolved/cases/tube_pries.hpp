@@ -15,7 +15,6 @@
 #include "unresolved/coupling/suspension_viscosity.hpp"
 #include "unresolved/dem/particle_params.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
-#include "unresolved/fvm/fvm_solver.hpp"
 
 namespace hs::unresolved {
 

@@ -124,21 +124,6 @@ void FvmSolver::fill_pressure_ghosts() {
   }
 }
 
-/// Divergence of eps u (1/s) in cell idx from face velocities u (the pressure equation's own form).
-double FvmSolver::cell_divergence(const std::array<BlockField<double>, 3>& u, long idx) const {
-  double div = 0.0;
-  for (int ax = 0; ax < 3; ++ax) {
-    const auto& f = u[static_cast<std::size_t>(ax)];
-    const auto& ap = grid_.apertures(ax);
-    const long hi = idx + f.stride(ax);
-    div += face_average(eps_, ax, hi) * ap[static_cast<std::size_t>(hi)] * f[static_cast<std::size_t>(hi)] -
-           face_average(eps_, ax, idx) * ap[static_cast<std::size_t>(idx)] * f[static_cast<std::size_t>(idx)];
-  }
-  // A product, as it always was: the particle runs are chaotic, and div / h_ (a last-bit change) moved the committed
-  // tube-pries case from Ht_d +2.4%, mu_rel +5.1% to +3.4%, +3.1%.
-  return div * (1.0 / h_);
-}
-
 void FvmSolver::pressure_corrector(bool final) {
   for (int c = 0; c < 3; ++c) {
     Component& comp = comp_[static_cast<std::size_t>(c)];
@@ -147,10 +132,19 @@ void FvmSolver::pressure_corrector(bool final) {
     scatter(c, comp.hbya, hb_[static_cast<std::size_t>(c)]);
   }
   const long rows = static_cast<long>(p_cell_.size());
+  const double inv_h = 1.0 / h_;
 #pragma omp parallel for schedule(static) if (rows > kParallelRows)
   for (long r = 0; r < rows; ++r) {
     const long idx = p_cell_[static_cast<std::size_t>(r)];
-    p_rhs_[static_cast<std::size_t>(r)] = r == p_ref_row_ ? 0.0 : -cell_divergence(hb_, idx) - deps_dt_[static_cast<std::size_t>(idx)];
+    double div = 0.0;
+    for (int ax = 0; ax < 3; ++ax) {
+      const auto& hb = hb_[static_cast<std::size_t>(ax)];
+      const auto& ap = grid_.apertures(ax);
+      const long hi = idx + hb.stride(ax);
+      div += face_average(eps_, ax, hi) * ap[static_cast<std::size_t>(hi)] * hb[static_cast<std::size_t>(hi)] -
+             face_average(eps_, ax, idx) * ap[static_cast<std::size_t>(idx)] * hb[static_cast<std::size_t>(idx)];
+    }
+    p_rhs_[static_cast<std::size_t>(r)] = r == p_ref_row_ ? 0.0 : -div * inv_h - deps_dt_[static_cast<std::size_t>(idx)];
     p_x_[static_cast<std::size_t>(r)] = p_[static_cast<std::size_t>(idx)];
   }
   SolveTolerance tol = piso_.pressure;
@@ -158,7 +152,6 @@ void FvmSolver::pressure_corrector(bool final) {
   stats_.pressure_iterations += pressure_.solve(p_rhs_, p_x_, tol);
   for (long r = 0; r < rows; ++r) p_[static_cast<std::size_t>(p_cell_[static_cast<std::size_t>(r)])] = p_x_[static_cast<std::size_t>(r)];
   fill_pressure_ghosts();
-  const double inv_h = 1.0 / h_;
   for (int c = 0; c < 3; ++c) {
     Component& comp = comp_[static_cast<std::size_t>(c)];
     const long n = static_cast<long>(comp.node.size());

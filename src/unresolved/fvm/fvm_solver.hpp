@@ -38,8 +38,9 @@ using FluidProperties = common::FluidProperties;
 ///              But short pressure waves relax only by nu dt L / (1 + nu dt L) per step (L the Laplacian's
 ///              eigenvalue), i.e. slowly at large viscous numbers: right for single-phase flow that settles, wrong
 ///              around moving DEM spheres (tube-pries, D = 30 um: Ht_d -22.5% against PISO's +2.4%). The rotational
-///              form (Timmermans et al. 1996, p += -nu div u*), exact where the operators commute, jittered by +-5%
-///              from step to step with the spheres. Opt-in for single-phase cases; PISO stays the default.
+///              form (Timmermans et al. 1996, p += -nu div u*; tried, not kept), exact where the operators commute,
+///              jittered by +-5% from step to step with the spheres. Opt-in for single-phase cases; PISO stays the
+///              default.
 enum class PressureCoupling { piso, projection };
 
 /// "piso" or "projection" (case files' [numerics] pressure_coupling); ConfigError otherwise.
@@ -168,7 +169,6 @@ class FvmSolver {
   void compute_drive_response();
   void solve_momentum(int c);
   void pressure_corrector(bool final);
-  [[nodiscard]] double cell_divergence(const std::array<BlockField<double>, 3>& u, long idx) const;
   void correct_flow_rate();
   void update_fluxes();
   void scatter(int c, const Eigen::VectorXd& values, BlockField<double>& field) const;
