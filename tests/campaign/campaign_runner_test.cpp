@@ -101,6 +101,10 @@ TEST(Campaign, AFreshCloneGoesOnFromTheArchive) {
   EXPECT_NE(again.output.find("2 done"), std::string::npos) << again.output;
   EXPECT_FALSE(fs::exists(dir / "runs" / "re-0.1" / "console.txt")) << "a restored run must not run again";
   EXPECT_EQ(hs::common::read_csv(dir / "dataset.csv").column("u_max_m_s"), rows);
+  // A reopened run leaves the archive too: a clone made now must not bring its old result back as done.
+  EXPECT_EQ(run("campaign " + dir.string() + " --reopen-done --max-runs 0").code, 0);
+  EXPECT_FALSE(fs::exists(dir / "archive" / "re-0.1" / "status.json"));
+  EXPECT_FALSE(fs::exists(dir / "archive" / "re-0.1" / "summary.json"));
 }
 
 TEST(Campaign, ReopenedRunsGoAgainAndLeaveTheDatasetUntilTheyFinish) {
