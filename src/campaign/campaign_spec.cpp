@@ -125,7 +125,7 @@ CampaignSpec read_campaign_spec(const std::filesystem::path& dir) {
   if (!std::filesystem::is_regular_file(spec.template_case)) c.fail("template", "no such case file");
   spec.jobs = static_cast<int>(c.integer_in_or("jobs", 1, 64, 2));
   spec.threads_per_job = static_cast<int>(c.integer_in_or("threads_per_job", 1, 256, 1));
-  if (!c.string_or("archive", "").empty()) spec.archive_dir = c.file_path("archive");
+  if (!c.string_or("archive", "").empty()) spec.archive_dir = c.file_path("archive").lexically_normal();
 
   auto grid = root.section("grid");
   for (const auto& name : grid.keys()) spec.axes.push_back(read_axis(grid.section(name), name));
