@@ -16,10 +16,7 @@ namespace {
 
 using namespace hs::unresolved;
 
-constexpr double kRho = 1025.0;   // plasma, rbc_blood_properties.csv
-constexpr double kNu = 1.2e-6;
-constexpr double kRadius = 10e-6;
-constexpr double kGradient = -5e4;   // Pa/m: centreline 1 mm/s
+using namespace test::plasma_tube;
 constexpr int kCells = 20;
 constexpr double kDx = 2.0 * kRadius / kCells;
 
@@ -37,19 +34,7 @@ TubeRun run_tube(PressureCoupling coupling, double viscous_number, int steps, do
                    {.dt_s = viscous_number * kDx * kDx / kNu, .coupling = coupling, .max_courant = 1e30,
                     .pressure = {.tolerance = 1e-12, .rel_tol = 0.0}, .momentum_tolerance = 1e-12},
                    {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = kGradient});
-  if (m != 1.0) {
-    BlockField<double>& factor = solver.viscosity_factor();
-    const auto& n = grid.cells();
-    for (int k = 0; k < n[2]; ++k) {
-      for (int j = 0; j < n[1]; ++j) {
-        for (int i = 0; i < n[0]; ++i) {
-          const auto x = grid.cell_centre_m(i, j, k);
-          factor(i, j, k) = std::hypot(x[0], x[1]) < a ? m : 1.0;
-        }
-      }
-    }
-    solver.coupling_fields_changed();
-  }
+  if (m != 1.0) test::set_viscous_core(solver, grid, a, m);
   TubeRun run;
   for (int s = 0; s < steps; ++s) {
     solver.step();

@@ -14,10 +14,7 @@ namespace {
 
 using namespace hs::unresolved;
 
-constexpr double kRho = 1025.0;   // plasma, rbc_blood_properties.csv
-constexpr double kNu = 1.2e-6;
-constexpr double kRadius = 10e-6;
-constexpr double kGradient = -5e4;   // Pa/m: centreline 1 mm/s
+using namespace test::plasma_tube;
 
 /// Two-layer Poiseuille: viscosity m mu inside r < a, mu outside: Q = pi G / (8 mu) [(R^2 - a^2)^2
 /// + 2 a^2 (R^2 - a^2) + a^4 / m] with G = -dp/dz.
@@ -38,17 +35,7 @@ double flow_rate(double a, double m) {
   const FvmGrid grid = test::periodic_tube_grid(tube, 2.0 * kRadius, length, 20);
   FvmSolver solver(grid, {.density_kg_m3 = kRho, .kinematic_viscosity_m2_s = kNu}, {.dt_s = 2e-6},
                    {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = kGradient});
-  BlockField<double>& factor = solver.viscosity_factor();
-  const auto& n = grid.cells();
-  for (int k = 0; k < n[2]; ++k) {
-    for (int j = 0; j < n[1]; ++j) {
-      for (int i = 0; i < n[0]; ++i) {
-        const auto x = grid.cell_centre_m(i, j, k);
-        factor(i, j, k) = std::hypot(x[0], x[1]) < a ? m : 1.0;
-      }
-    }
-  }
-  solver.coupling_fields_changed();
+  test::set_viscous_core(solver, grid, a, m);
   for (int s = 0; s < 400; ++s) solver.step();
   return solver.flow_rate_m3_s(2);
 }
