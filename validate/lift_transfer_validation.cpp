@@ -90,7 +90,11 @@ int validate_lift_transfer(const hs::common::TaskOptions& options) {
                     {"shear_ratio", in.shear_ratio}, {"re_p", in.re_p}});
   }
   const bool passed = !table.rows.empty() && worst <= kTolerancePct;
-  fmt::print("lift-transfer: max error {:.1f}% (tolerance {:.0f}%): {}\n", worst, kTolerancePct, passed ? "passed" : "not passed");
+  if (table.rows.empty()) {
+    fmt::print("lift-transfer: no complete row yet (a row needs its drag and its lift run)\n");
+  } else {
+    fmt::print("lift-transfer: max error {:.1f}% (tolerance {:.0f}%): {}\n", worst, kTolerancePct, passed ? "passed" : "not passed");
+  }
   if (options.json_file) {
     hs::common::write_json(*options.json_file, {{"validation", "lift-transfer"},
                                                 {"closure", file.string()},
