@@ -111,14 +111,18 @@ std::string failure_reason(const RunRecord& r, int code) {
 CampaignRunner::CampaignRunner(CampaignSpec spec, CampaignOptions options)
     : spec_(std::move(spec)), options_(std::move(options)) {}
 
-std::vector<RunRecord> CampaignRunner::records(bool restore) const {
+std::vector<RunRecord> CampaignRunner::records(bool prepare) const {
   std::vector<RunRecord> out;
   for (const auto& p : grid_points(spec_)) {
     const std::string name = run_name(spec_, p);
     const auto dir = spec_.dir / "runs" / name;
-    std::filesystem::create_directories(dir);
     RunRecord r = read_run_record(dir, name);
-    if (restore && !spec_.archive_dir.empty() && restore_run(r, spec_.archive_dir)) r = read_run_record(dir, name);
+    if (!prepare) {
+      out.push_back(std::move(r));
+      continue;
+    }
+    std::filesystem::create_directories(dir);
+    if (!spec_.archive_dir.empty() && restore_run(r, spec_.archive_dir)) r = read_run_record(dir, name);
     // A run never started follows campaign.toml as it is now (an override added, the template edited); one that
     // has started keeps the case it started with.
     const bool never_started = r.state == RunState::pending && r.attempts == 0 && !std::filesystem::exists(r.output_dir());
@@ -129,7 +133,7 @@ std::vector<RunRecord> CampaignRunner::records(bool restore) const {
 }
 
 std::string CampaignRunner::status_table() const {
-  const auto runs = records(false);   // looks, writes nothing from the archive
+  const auto runs = records(false);   // only looks: writes no folder, case file or archived run
   std::map<RunState, int> count;
   std::string out = fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", "run", "state", "wall", "attempts",
                                 "simulated", "reason");
@@ -170,11 +174,16 @@ std::string CampaignRunner::status_table() const {
 
 int CampaignRunner::run() {
   auto runs = records(true);
+  const auto points = grid_points(spec_);   // points[i] is runs[i]'s
   std::vector<std::size_t> queue;
 
   int finished = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (runs[i].state == RunState::failed && options_.retry_failed) runs[i].state = RunState::pending;
+    if (runs[i].state == RunState::failed && options_.retry_failed) {
+      runs[i].state = RunState::pending;
+      // It starts afresh, so from campaign.toml as it is now: an override added to fix the failure applies.
+      write_run_case(spec_, points[i], runs[i].dir / "case.toml");
+    }
     if (runs[i].state == RunState::done && options_.reopen_done) {
       const bool resumable = common::Checkpoint::exists(runs[i].output_dir() / "checkpoint");
       runs[i].state = resumable ? RunState::resumable : RunState::pending;   // pending: afresh, its output set aside

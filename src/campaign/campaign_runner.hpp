@@ -25,9 +25,9 @@ class CampaignRunner {
  public:
   CampaignRunner(CampaignSpec spec, CampaignOptions options);
 
-  /// The records of every run, read from disk (their case files are written if missing); `restore`: runs the folder
-  /// knows nothing about are first brought back from the archive (run_archive.hpp).
-  std::vector<RunRecord> records(bool restore) const;
+  /// The records of every run, read from disk. `prepare`: each run gets its folder and case file, and runs the folder
+  /// knows nothing about are first brought back from the archive (run_archive.hpp); without it nothing is written.
+  std::vector<RunRecord> records(bool prepare) const;
   /// Runs what is left; returns the number of runs that failed (now or before).
   int run();
   /// A table of every run's state, for `hemoscale campaign DIR --status`.

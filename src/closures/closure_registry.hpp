@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include "common/config/config_file.hpp"
 #include "common/errors.hpp"
 
 namespace hs::closures {
@@ -22,19 +21,13 @@ namespace hs::closures {
 /// it is.
 enum class OutsideValidity { clamp, extrapolate };
 
-/// What a case file says about one closure: `[coupling.drag] model = "expression"  file = "cd.toml"`.
+/// One closure as a case chose it: a registered name, or model "expression" with its closure file
+/// (tube-pries: `[coupling] drag = "schiller_naumann" | "path/cd.toml"`, unresolved/cases/tube_pries.cpp).
 struct ClosureSpec {
   std::string model;
   std::filesystem::path file;   // closure file, for model = "expression" (absolute)
   OutsideValidity outside = OutsideValidity::clamp;   // learned closures only
 };
-
-/// Reads `model` and, when present, `file` (relative to the case file) from a case-file section.
-[[nodiscard]] inline ClosureSpec read_closure_spec(hs::common::ConfigSection& section) {
-  ClosureSpec spec{.model = section.string("model"), .file = {}};
-  if (section.has("file") || spec.model == "expression") spec.file = section.file_path("file");
-  return spec;
-}
 
 template <class T>
 class ClosureRegistry {

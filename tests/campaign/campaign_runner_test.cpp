@@ -137,8 +137,12 @@ TEST(Campaign, AFailedRunIsRecordedAndDoesNotStopTheOthers) {
   // fails while reading its case, before it has an output folder, so one is left here as a later failure would.
   fs::create_directories(dir / "runs" / "re-5000" / "output");
   std::ofstream(dir / "runs" / "re-5000" / "output" / "log.txt") << "an earlier attempt\n";
+  // The retry starts from campaign.toml as it is now: an override added after the failure reaches the run's case.
+  std::ofstream(dir / "campaign.toml", std::ios::app)
+      << "[override.retry]\nwhen = { re = 5000.0 }\nkey = \"numerics.tau\"\nvalue = 3.5\nwhy = \"added after it failed\"\n";
   const auto retry = run("campaign " + dir.string() + " --retry-failed");
   EXPECT_EQ(retry.code, 1) << retry.output;
+  EXPECT_NE(hs::test::file_text(dir / "runs" / "re-5000" / "case.toml").find("tau = 3.5"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "runs" / "re-5000" / "output.attempt-1" / "log.txt"));
   const auto again = run("campaign " + dir.string() + " --status");
   EXPECT_NE(again.output.find("Mach"), std::string::npos) << again.output;
@@ -222,7 +226,7 @@ TEST(Campaign, ARunNotYetStartedFollowsAnOverrideAddedLater) {
   std::ofstream(dir / "campaign.toml", std::ios::app)
       << "[override.later]\nwhen = { re = 0.2 }\nkey = \"numerics.tau\"\nvalue = 3.5\nwhy = \"added later\"\n"
       << "[override.too_late]\nwhen = { re = 0.1 }\nkey = \"numerics.tau\"\nvalue = 3.0\nwhy = \"after its run\"\n";
-  ASSERT_EQ(run("campaign " + dir.string() + " --status").code, 0);
+  ASSERT_EQ(run("campaign " + dir.string() + " --max-runs 0").code, 0);   // prepares the runs, starts none
   const auto text = [&](const char* name) {
     std::ifstream in(dir / "runs" / name / "case.toml");
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -272,7 +276,7 @@ TEST(Campaign, AStoppedCampaignLeavesItsRunsResumable) {
   fs::remove_all(dir / "runs");
   const auto archived = run("campaign " + dir.string() + " --status");   // --status only looks
   EXPECT_NE(archived.output.find("resumable*"), std::string::npos) << archived.output;
-  EXPECT_FALSE(fs::exists(checkpoint));
+  EXPECT_FALSE(fs::exists(dir / "runs" / "re-0.5")) << "--status wrote a run folder";
   const auto restored = run("campaign " + dir.string() + " --max-runs 0");   // restores, starts nothing
   EXPECT_EQ(restored.code, 0) << restored.output;
   EXPECT_EQ(hs::test::file_text(checkpoint), saved);
