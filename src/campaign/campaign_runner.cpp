@@ -133,15 +133,20 @@ std::vector<RunRecord> CampaignRunner::records(bool prepare) const {
 }
 
 std::string CampaignRunner::status_table() const {
-  const auto runs = records(false);   // only looks: writes no folder, case file or archived run
+  auto runs = records(false);   // only looks: writes no folder, case file or archived run
   std::map<RunState, int> count;
   std::string out = fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", "run", "state", "wall", "attempts",
                                 "simulated", "reason");
-  for (const auto& r : runs) {
+  for (auto& r : runs) {
     // Not yet brought back from the archive (a fresh clone): the next `hemoscale campaign` restores it.
     const bool archived = !spec_.archive_dir.empty() && r.state == RunState::pending && r.attempts == 0 &&
                           !std::filesystem::exists(r.output_dir()) && std::filesystem::exists(spec_.archive_dir / r.name);
     const bool archived_done = archived && std::filesystem::exists(spec_.archive_dir / r.name / "status.json");
+    if (archived_done) {   // its wall time and attempts as archived, so the totals below count it
+      const RunRecord kept = read_run_record(spec_.archive_dir / r.name, r.name);
+      r.wall_s = kept.wall_s;
+      r.attempts = kept.attempts;
+    }
     ++count[archived ? (archived_done ? RunState::done : RunState::resumable) : r.state];
     const std::string state = archived ? (archived_done ? "done*" : "resumable*") : to_string(r.state);
     out += fmt::format("{:<44} {:<10} {:>10} {:>8} {:>10}  {}\n", r.name, state,

@@ -96,6 +96,9 @@ TEST(Campaign, AFreshCloneGoesOnFromTheArchive) {
   const auto rows = hs::common::read_csv(dir / "dataset.csv").column("u_max_m_s");
   fs::remove_all(dir / "runs");
   fs::remove(dir / "dataset.csv");
+  const auto looked = run("campaign " + dir.string() + " --status");   // the archived runs' wall time counts
+  EXPECT_NE(looked.output.find("done*"), std::string::npos) << looked.output;
+  EXPECT_EQ(looked.output.find("runs so far 0.0s"), std::string::npos) << looked.output;
   const auto again = run("campaign " + dir.string());
   EXPECT_EQ(again.code, 0) << again.output;
   EXPECT_NE(again.output.find("2 done"), std::string::npos) << again.output;
