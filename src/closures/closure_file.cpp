@@ -116,7 +116,9 @@ hs::regression::Expression ClosureFile::parsed() const { return hs::regression::
 
 void ClosureFile::write(const std::filesystem::path& file) const {
   std::ostringstream s;
-  s << "# Learned closure written by `hemoscale fit`; `/` is protected division (1 where |denominator| <= 0.001).\n";
+  s << "# Learned closure written by `hemoscale fit`. Protected functions (src/regression/op.hpp): `/` gives 1 where "
+       "|denominator| <= 0.001;\n# sqrt(x) is sqrt(|x|), log(x) is log(|x|) (0 where |x| <= 0.001), `^` is |a|^b; exp "
+       "and `^` saturate at 1e100.\n";
   s << "name       = " << quoted(name) << "\nkind       = " << quoted(kind) << "\noutput     = " << quoted(output)
     << "\nexpression = " << quoted(expression) << "\n";
   if (kind == "lift") {
