@@ -96,8 +96,12 @@ fs::path output_dir(const hs::common::TaskOptions& options) {
 
 namespace {
 
-int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCorrection wall, const std::string& stem) {
+int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCorrection wall,
+                    const std::string& default_stem) {
   const fs::path dir = output_dir(options);
+  // The table and plot go beside the JSON and share its name (results/X.json, X.csv, X.png), so runs kept side by
+  // side in one folder do not overwrite each other's.
+  const std::string stem = options.json_file ? options.json_file->stem().string() : default_stem;
   const fs::path csv_path = dir / (stem + ".csv");
   std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",

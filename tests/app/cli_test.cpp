@@ -67,3 +67,14 @@ TEST(Cli, UnknownBenchmarkIsExitTwo) {
 TEST(Cli, BadOptionIsExitTwo) {
   EXPECT_EQ(run("run --no-such-flag x").code, 2);
 }
+
+TEST(Cli, PriesTableAndPlotTakeTheJsonFilesName) {
+  // Results kept side by side (validate/results/DATE_WHAT.json) must not overwrite each other's table.
+  const auto dir = fs::temp_directory_path() / "hs_cli_pries_names";
+  fs::remove_all(dir);
+  const auto r = run("validate pries --quick --json " + (dir / "first.json").string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "first.json")) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "first.csv")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "pries_validation.csv"));
+}
