@@ -157,4 +157,8 @@ int validate_pries_wall(const hs::common::TaskOptions& options) {
   return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre, "pries_wall_validation");
 }
 
+int validate_pries_wall_relative(const hs::common::TaskOptions& options) {
+  return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre_relative, "pries_wall_relative_validation");
+}
+
 }  // namespace hs::unresolved

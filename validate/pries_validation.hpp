@@ -14,5 +14,8 @@ int validate_pries(const hs::common::TaskOptions& options);
 /// The same table with the Haberman-Sayre confinement factor on the drag ([coupling] wall_correction), written as
 /// pries_wall_validation.csv/.json/.png.
 int validate_pries_wall(const hs::common::TaskOptions& options);
+/// The same table with the factor relative to the learned closures' own tube, K(d_p / D) / K(d_p / 50 um)
+/// (haberman_sayre_relative: they were fitted in that tube, so they already hold its confinement).
+int validate_pries_wall_relative(const hs::common::TaskOptions& options);
 
 }  // namespace hs::unresolved

@@ -14,6 +14,7 @@ std::map<std::string, TaskEntry> validations() {
   r["stretching"] = {"RBC optical-tweezers stretching vs Mills et al. 2004 (13 forces, 258 + 642 vertices)", hs::resolved::validate_stretching};
   r["pries"] = {"Fahraeus-Lindqvist tube table (CFD-DEM) vs Pries et al. 1992 (learned closures, bulk viscosity; --closures NAME|FILE|DIR, --suspension-viscosity)", hs::unresolved::validate_pries};
   r["pries-wall"] = {"the pries table (same model and options) with the Haberman-Sayre wall correction of the drag", hs::unresolved::validate_pries_wall};
+  r["pries-wall-relative"] = {"the pries table with the Haberman-Sayre factor relative to the learned closures' 50 um tube", hs::unresolved::validate_pries_wall_relative};
   r["lift-transfer"] = {"the learned lift closure (R_c = 25 um) vs resolved runs at R_c = 15 um (data/resolved/transfer-r15; --closures FILE)", hs::closures::validate_lift_transfer};
   r["resolved-dataset"] = {"the campaign's data/resolved/dataset.csv: every (Re, r*) row, the acceptance rules, ranges vs the seed paper", hs::campaign::validate_resolved_dataset};
   return r;

@@ -25,17 +25,26 @@ double haberman_sayre_factor(double lambda) {
 WallCorrection wall_correction_from_name(std::string_view name) {
   if (name == "none") return WallCorrection::none;
   if (name == "haberman_sayre") return WallCorrection::haberman_sayre;
-  throw hs::common::ConfigError(fmt::format("unknown wall correction \"{}\" (allowed: \"none\", \"haberman_sayre\")", name));
+  if (name == "haberman_sayre_relative") return WallCorrection::haberman_sayre_relative;
+  throw hs::common::ConfigError(fmt::format(
+      "unknown wall correction \"{}\" (allowed: \"none\", \"haberman_sayre\", \"haberman_sayre_relative\")", name));
 }
 
 std::string wall_correction_name(WallCorrection w) {
-  return w == WallCorrection::haberman_sayre ? "haberman_sayre" : "none";
+  switch (w) {
+    case WallCorrection::haberman_sayre: return "haberman_sayre";
+    case WallCorrection::haberman_sayre_relative: return "haberman_sayre_relative";
+    case WallCorrection::none: break;
+  }
+  return "none";
 }
 
 double wall_correction_factor(WallCorrection w, double particle_diameter_m, double tube_diameter_m) {
   if (w == WallCorrection::none) return 1.0;
   if (!(tube_diameter_m > 0.0)) throw hs::common::ConfigError("wall correction: the tube diameter must be > 0");
-  return haberman_sayre_factor(particle_diameter_m / tube_diameter_m);
+  const double k = haberman_sayre_factor(particle_diameter_m / tube_diameter_m);
+  if (w == WallCorrection::haberman_sayre) return k;
+  return k / haberman_sayre_factor(particle_diameter_m / kLearnedClosureTubeDiameter_m);
 }
 
 }  // namespace hs::closures

@@ -50,4 +50,18 @@ TEST(WallCorrection, BadInputsAreConfigErrors) {
   EXPECT_THROW((void)wall_correction_factor(WallCorrection::haberman_sayre, 10e-6, 12e-6), hs::common::ConfigError);
 }
 
+TEST(WallCorrection, RelativeFactorIsOneInTheLearnedClosuresTube) {
+  // The learned closures already hold their 50 um tube's confinement: there the relative factor is 1, and in a
+  // narrower tube it is the ratio of the two on-axis factors (1.24 at D = 30 um for d_p = 5.6 um, docs/cfd-dem.md).
+  const double d_p = 5.597e-6;
+  const auto relative = WallCorrection::haberman_sayre_relative;
+  EXPECT_DOUBLE_EQ(wall_correction_factor(relative, d_p, kLearnedClosureTubeDiameter_m), 1.0);
+  const double ratio = haberman_sayre_factor(d_p / 30e-6) / haberman_sayre_factor(d_p / 50e-6);
+  EXPECT_DOUBLE_EQ(wall_correction_factor(relative, d_p, 30e-6), ratio);
+  EXPECT_NEAR(ratio, 1.236, 1e-3);   // K(0.1866) / K(0.1119) = 1.6114 / 1.3033
+  EXPECT_LT(wall_correction_factor(relative, d_p, 100e-6), 1.0);   // a wider tube than the fit's: less drag
+  EXPECT_EQ(wall_correction_from_name("haberman_sayre_relative"), relative);
+  EXPECT_EQ(wall_correction_name(relative), "haberman_sayre_relative");
+}
+
 }  // namespace

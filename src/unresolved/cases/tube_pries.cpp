@@ -90,8 +90,8 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   for (hs::closures::ClosureSpec* s : {&c.drag, &c.lift, &c.deformation}) {
     s->outside = outside == "clamp" ? hs::closures::OutsideValidity::clamp : hs::closures::OutsideValidity::extrapolate;
   }
-  // Default "none" keeps the closures' unbounded-sphere drag; "haberman_sayre" multiplies it by the on-axis
-  // confinement factor K(d_p / D) (closures/wall_correction.hpp).
+  // Default "none" keeps the closures' drag; "haberman_sayre" multiplies it by the on-axis confinement factor
+  // K(d_p / D), "haberman_sayre_relative" by K(d_p / D) / K(d_p / 50 um) (closures/wall_correction.hpp).
   try {
     c.wall_correction = hs::closures::wall_correction_from_name(coupling.string_or("wall_correction", "none"));
   } catch (const hs::common::ConfigError& e) {
