@@ -19,6 +19,8 @@ struct TaskArgs {
   std::string extra;
   std::string suspension_viscosity;
   bool quick = false;
+  std::string dataset;
+  double tighten = 1.0;
 };
 
 inline void add_task_options(CLI::App& cmd, TaskArgs& args, const std::map<std::string, TaskEntry>& known) {
@@ -30,6 +32,11 @@ inline void add_task_options(CLI::App& cmd, TaskArgs& args, const std::map<std::
   cmd.add_option("--closures", args.extra, "closure set by name or file (validations that use closures)");
   cmd.add_option("--suspension-viscosity", args.suspension_viscosity,
                  "none | einstein | pries_bulk: the cells' stress in CFD-DEM validations (pries: default pries_bulk)");
+  cmd.add_option("--dataset", args.dataset, "the dataset CSV a dataset validation reads (default: the committed one)");
+  cmd.add_option("--tighten", args.tighten,
+                 "for tests of the failure path: every band divided by F, every target multiplied by F (a result, "
+                 "never a validation)")
+      ->check(CLI::PositiveNumber);
 }
 
 inline int dispatch_task(const char* kind, const std::map<std::string, TaskEntry>& known, const TaskArgs& args) {
@@ -44,6 +51,8 @@ inline int dispatch_task(const char* kind, const std::map<std::string, TaskEntry
   options.quick = args.quick;
   options.extra = args.extra;
   options.suspension_viscosity = args.suspension_viscosity;
+  options.tighten = args.tighten;
+  if (!args.dataset.empty()) options.dataset = args.dataset;
   return it->second.run(options);
 }
 

@@ -2,6 +2,7 @@
 // `hemoscale bench cfddem`: RBC spheres at Ht 0.10 in a periodic 100 um tube whose length holds N cells; median
 // wall time of a coupled CFD step (n_coupling DEM steps + coupling + PISO) and the process's peak RSS.
 #include "bench/cfddem_bench.hpp"
+#include "bench/bench_targets.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -97,9 +98,17 @@ int run_cfddem_bench(const hs::common::TaskOptions& options) {
     j[key + "_s_per_cfd_step"] = m.s_per_cfd_step;
     j[key + "_peak_rss_GiB"] = m.peak_rss_gib;
   }
+  hs::common::CheckList checks;
+  const auto measured = [&j](const char* key) { return j.contains(key) ? std::optional<double>(j[key].get<double>()) : std::nullopt; };
+  expect_at_most(checks, options, "cfddem_1e6_s_per_cfd_step", measured("cfddem_1e6_s_per_cfd_step"), 2.0,
+                 "issue #28: <= 2 s per CFD step at 1e6 RBCs on this 2-core machine");
+  expect_at_most(checks, options, "cfddem_1e6_peak_rss_GiB", measured("cfddem_1e6_peak_rss_GiB"), 4.0,
+                 "issue #28: peak memory <= 4 GiB at 1e6 RBCs");
+  checks.write_to(j);
   j["provenance"] = hs::common::provenance();
   if (options.json_file) hs::common::write_json(*options.json_file, j);
-  return 0;
+  checks.print("bench cfddem");
+  return checks.exit_code();
 }
 
 }  // namespace hs::bench

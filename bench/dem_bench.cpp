@@ -2,6 +2,7 @@
 // `hemoscale bench dem`: 1e5 Hertz spheres packed as in shared/bench/liggghts/in.rbcpack, timed at 1 and 2 threads,
 // and LIGGGHTS on the same system in the same invocation when it is on PATH.
 #include "bench/dem_bench.hpp"
+#include "bench/bench_targets.hpp"
 
 #include <omp.h>
 #include <unistd.h>
@@ -180,6 +181,9 @@ int run_dem_bench(const hs::common::TaskOptions& options) {
   if (!lig1.empty()) fmt::print("  speed-up vs LIGGGHTS (1 thread vs 1 rank): {:.2f}x\n", median(lig1) / median(one.ns_per_particle_step));
   fmt::print("  note: {}\n", note);
 
+  hs::common::CheckList checks;
+  expect_at_least(checks, options, "speedup_vs_liggghts", lig1.empty() ? std::nullopt : std::optional<double>(median(lig1) / median(one.ns_per_particle_step)),
+                  2.0, "issue #28: DEM >= 2x LIGGGHTS per particle-step");
   if (options.json_file) {
     nlohmann::json j;
     j["benchmark"] = "dem";
@@ -197,9 +201,11 @@ int run_dem_bench(const hs::common::TaskOptions& options) {
     j["speedup_vs_liggghts"] = lig1.empty() ? nlohmann::json(nullptr) : nlohmann::json(median(lig1) / median(one.ns_per_particle_step));
     j["note"] = note;
     j["provenance"] = hs::common::provenance();
+    checks.write_to(j);
     hs::common::write_json(*options.json_file, j);
   }
-  return 0;
+  checks.print("bench dem");
+  return checks.exit_code();
 }
 
 }  // namespace hs::bench

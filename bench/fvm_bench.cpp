@@ -3,6 +3,7 @@
 // ../shared/bench/openfoam (n^3 cells, U_lid = 1 m/s, nu = 0.01 m^2/s, dt = 0.05/n s, 2 correctors,
 // p tolerance 1e-6 relTol 0.05), and of icoFoam on the same problem when OpenFOAM is installed.
 #include "bench/fvm_bench.hpp"
+#include "bench/bench_targets.hpp"
 
 #include <algorithm>
 #include <array>
@@ -173,9 +174,15 @@ int run_fvm_bench(const hs::common::TaskOptions& options) {
   } else {
     std::printf("icoFoam: not installed (Debian package openfoam) or run_cavity3d.sh not found: no comparison\n");
   }
+  hs::common::CheckList checks;
+  expect_at_least(checks, options, "speedup_vs_openfoam",
+                  j.contains("speedup_vs_openfoam") ? std::optional<double>(j["speedup_vs_openfoam"].get<double>()) : std::nullopt,
+                  3.0, "issue #28: FVM >= 3x icoFoam per cell-step");
+  checks.write_to(j);
   j["provenance"] = hs::common::provenance();
   if (options.json_file) hs::common::write_json(*options.json_file, j);
-  return 0;
+  checks.print("bench fvm");
+  return checks.exit_code();
 }
 
 }  // namespace hs::bench

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/resolved_bench.hpp"
+#include "bench/bench_targets.hpp"
 #include "common/config/config_file.hpp"
 #include "common/run_folder.hpp"
 #include "resolved/cases/tube_cell.hpp"
@@ -135,9 +136,18 @@ int run_resolved_bench(const hs::common::TaskOptions& options) {
                         {"campaign_hours_at_cap", hours_cap},
                         {"expected_periods_per_run", kExpectedPeriods},
                         {"repetitions", 3}};
+  hs::common::CheckList checks;
+  if (options.quick) {
+    checks.skip("campaign_hours_projected", "--quick: 100 steps, mostly the spin-up, do not project a campaign");
+  } else {
+    expect_at_most(checks, options, "campaign_hours_projected", hours_expected, 4.7,
+                   "issue #27: no more than the 4.7 h the capped campaign projects");
+  }
+  checks.write_to(out);
   out["provenance"] = hs::common::provenance();
   if (options.json_file) hs::common::write_json(*options.json_file, out);
-  return 0;
+  checks.print("bench resolved");
+  return checks.exit_code();
 }
 
 }  // namespace hs::bench

@@ -3,7 +3,9 @@
 // acceptance rules (every grid point, finite values, 0 < DI < 1, drag along the flow, lift towards the axis) and the
 // seed paper's ranges of gamma+ and Re_p. Also Cd Re_p per r*: at Re_p << 1 the drag is Stokes drag, so Cd Re_p should
 // hardly depend on Re at a given r* (Oseen's correction is 3/16 Re_p, < 1 % here); a row far from its r*'s median
-// is worth a look. Reads the dataset only: nothing is simulated. Exit 0 when complete and valid, 1 otherwise.
+// is worth a look. Reads the dataset only: nothing is simulated. Exit 0 when every grid point is present, every row
+// within the rules and settled (a row stopped at its cap is no result), and gamma+ and Re_p span no more than the
+// paper's ranges; 1 otherwise, naming the check. --dataset FILE checks another campaign's dataset.csv.
 #include "validate/resolved_dataset_validation.hpp"
 
 #include <filesystem>
@@ -16,6 +18,7 @@
 
 #include "campaign/campaign_spec.hpp"
 #include "campaign/dataset_check.hpp"
+#include "common/check_list.hpp"
 #include "common/run_folder.hpp"
 
 namespace hs::campaign {
@@ -31,7 +34,7 @@ std::string inside(const Range& ours, const Range& paper) {
 
 int validate_resolved_dataset(const hs::common::TaskOptions& options) {
   const std::filesystem::path source(HS_SOURCE_DIR);
-  const std::filesystem::path csv = source / "data" / "resolved" / "dataset.csv";
+  const std::filesystem::path csv = options.dataset ? *options.dataset : source / "data" / "resolved" / "dataset.csv";
   // The grid is the campaign's (the seed paper's, sec. 4); the ranges are the paper's.
   const CampaignSpec spec = read_campaign_spec(source / "cases" / "campaign" / "tube-re-rstar");
   DatasetExpectations expected;
@@ -63,10 +66,18 @@ int validate_resolved_dataset(const hs::common::TaskOptions& options) {
     fmt::print("  Re {}, r* {}: {}\n", p.re, p.r_star, p.what);
     problems.push_back({{"re", p.re}, {"r_star", p.r_star}, {"problem", p.what}});
   }
-  if (!c.missing.empty()) fmt::print("  missing: {}\n", fmt::join(c.missing, "; "));
-  fmt::print("resolved-dataset: {}\n", c.complete_and_valid() ? "complete, every row within the rules"
-                                                               : fmt::format("{} missing, {} rule(s) broken",
-                                                                             c.missing.size(), c.problems.size()));
+  hs::common::CheckList checks;
+  checks.expect("every grid point present", c.missing.empty(),
+                c.missing.empty() ? fmt::format("{} rows", c.rows) : fmt::format("missing: {}", fmt::join(c.missing, "; ")));
+  for (const RowProblem& p : c.problems) checks.expect(fmt::format("Re {}, r* {}", p.re, p.r_star), false, p.what);
+  checks.expect("every row settled", c.unsettled == 0,
+                fmt::format("{} row(s) stopped at the cap before settling (settled or cd_settled false)", c.unsettled));
+  checks.expect("gamma+ inside the paper's range", inside(c.gamma_plus, expected.gamma_plus) == std::string("inside"),
+                fmt::format("[{:.3f}, {:.3f}] vs [{}, {}]", c.gamma_plus.min, c.gamma_plus.max, expected.gamma_plus.min,
+                            expected.gamma_plus.max));
+  checks.expect("Re_p inside the paper's range", inside(c.re_p, expected.re_p) == std::string("inside"),
+                fmt::format("[{:.4f}, {:.4f}] vs [{}, {}]", c.re_p.min, c.re_p.max, expected.re_p.min, expected.re_p.max));
+  checks.print("resolved-dataset");
   if (options.json_file) {
     nlohmann::json result = {{"validation", "resolved-dataset"},
                              {"dataset", csv.string()},
@@ -85,9 +96,10 @@ int validate_resolved_dataset(const hs::common::TaskOptions& options) {
                              {"cd_re_p_by_r_star", stokes},
                              {"complete_and_valid", c.complete_and_valid()},
                              {"provenance", hs::common::provenance()}};
+    checks.write_to(result);
     hs::common::write_json(*options.json_file, result);
   }
-  return c.complete_and_valid() ? 0 : 1;
+  return checks.exit_code();
 }
 
 }  // namespace hs::campaign

@@ -29,6 +29,9 @@ struct TaskOptions {
   bool quick = false;                                // --quick: a shorter version (CI)
   std::string extra;                                 // NAME-specific option string (e.g. --closures)
   std::string suspension_viscosity;                  // --suspension-viscosity NAME (CFD-DEM validations)
+  std::optional<std::filesystem::path> dataset;       // --dataset FILE (validations that read a dataset)
+  /// --tighten F (tests of the failure path only): every band divided by F, every benchmark target multiplied by F.
+  double tighten = 1.0;
 };
 using TaskRunner = std::function<int(const TaskOptions&)>;
 

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale validate NAME` exits 1 when a result is outside its band, and 0 only when every check it could make
+// passed: each validation is shown both ways, the failing side by a band tightened with --tighten (a test-only
+// option), a result known to be outside its band, or a dataset that breaks a rule.
+#include <gtest/gtest.h>
+
+#include "support/run_command.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Result = hs::test::CommandResult;
+Result run(const std::string& args) { return hs::test::run_hemoscale(args); }
+bool says(const Result& r, const std::string& text) { return r.output.find(text) != std::string::npos; }
+
+/// A complete 5 Re x 6 r* dataset (the campaign's grid) whose every row keeps the rules, settled, with gamma+ and
+/// Re_p inside the seed paper's ranges; `unsettled_row` >= 0 marks that row as stopped at its cap.
+fs::path write_dataset(const std::string& name, int unsettled_row) {
+  const fs::path dir = fs::temp_directory_path() / ("hs_validate_" + name);
+  fs::create_directories(dir);
+  const fs::path csv = dir / "dataset.csv";
+  std::ofstream out(csv);
+  out << "re,r_star,cd,cd_settled,cd_spread,cl,cl_spread,di,di_spread,dx_m,flow_mode,gamma_plus,git_commit,periods,re_p,"
+         "settled,u_r_plus\n";
+  int row = 0;
+  for (const double re : {0.1, 0.2, 0.3, 0.4, 0.5}) {
+    for (const double r_star : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7}) {
+      const double re_p = 0.02 + 0.1 * re * r_star;        // inside [0.01, 0.12]
+      const double gamma_plus = re * r_star;               // [0.02, 0.35], the paper's range
+      const char* settled = row == unsettled_row ? "false" : "true";
+      out << re << ',' << r_star << ',' << 30.0 / re_p << ",true,0.1," << -10.0 * r_star << ",0.1,0.45,0.001,1e-06,"
+          << "tank-treading," << gamma_plus << ",abc," << 3 << ',' << re_p << ',' << settled << ",-0.05\n";
+      ++row;
+    }
+  }
+  return csv;
+}
+
+}  // namespace
+
+TEST(ValidateExitCodes, ResolvedDatasetPassesOnlyAValidDataset) {
+  const Result good = run("validate resolved-dataset --dataset " + write_dataset("good", -1).string());
+  EXPECT_EQ(good.code, 0) << good.output;
+  const Result capped = run("validate resolved-dataset --dataset " + write_dataset("capped", 7).string());
+  EXPECT_EQ(capped.code, 1) << capped.output;
+  EXPECT_TRUE(says(capped, "FAILED  every row settled")) << capped.output;
+}
+
+TEST(ValidateExitCodes, TheCommittedDatasetFailsWhereItIsKnownToFail) {
+  // data/resolved/dataset.csv: one row stopped at its cap (r* 0.4, Re 0.5 drag) and Re_p [0.0057, 0.0537] outside the
+  // seed paper's [0.01, 0.12] (data/resolved/README.md). Both must be reported, not called agreement.
+  const Result r = run("validate resolved-dataset");
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_TRUE(says(r, "FAILED  every row settled")) << r.output;
+  EXPECT_TRUE(says(r, "FAILED  Re_p inside the paper's range")) << r.output;
+}
+
+TEST(ValidateExitCodes, StretchingQuickPassesAndFailsInANarrowerBand) {
+  const Result r = run("validate stretching --quick");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(says(r, "skipped 642 vertices")) << r.output;   // --quick says what it did not check
+  // The Mills band shrunk 20x about its midpoint: the model's diameters (inside the published band) fall outside.
+  const Result narrow = run("validate stretching --quick --tighten 20");
+  EXPECT_EQ(narrow.code, 1) << narrow.output;
+  EXPECT_TRUE(says(narrow, "FAILED ")) << narrow.output;
+}
+
+TEST(ValidateExitCodes, PriesQuickChecksThePlasmaAndSkipsThePriesBand) {
+  const fs::path dir = fs::temp_directory_path() / "hs_validate_pries_quick";
+  fs::remove_all(dir);
+  const Result r = run("validate pries --quick --json " + (dir / "quick.json").string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(says(r, "not a validation")) << r.output;
+  EXPECT_TRUE(says(r, "skipped D = 30 um, Ht_c 0.05: steady, Ht_d and mu_rel vs Pries")) << r.output;
+  // The plasma-only reference is within 5.6% of Poiseuille at 6 cells across; a 100x narrower band must fail.
+  const Result narrow = run("validate pries --quick --tighten 100 --json " + (dir / "narrow.json").string());
+  EXPECT_EQ(narrow.code, 1) << narrow.output;
+  EXPECT_TRUE(says(narrow, "FAILED  D = 30 um, Ht_c 0.05: plasma flow vs Poiseuille")) << narrow.output;
+}
+
+TEST(ValidateExitCodes, LiftTransferFailsWithTheCommittedClosure) {
+  // The committed lift closure misses the 15 um tube's lift by 43-62% at r* 0.5-0.6 (docs/cfd-dem.md), outside 25%.
+  const Result r = run("validate lift-transfer");
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_TRUE(says(r, "FAILED  R_c 15 um, Re 0.3, r* 0.6")) << r.output;
+  // A band 4x wider (100%) holds every row: the exit code follows the band, not the validation's name.
+  const Result wide = run("validate lift-transfer --tighten 0.25");
+  EXPECT_EQ(wide.code, 0) << wide.output;
+}
