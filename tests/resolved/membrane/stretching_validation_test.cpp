@@ -29,8 +29,9 @@ const StretchingBandPoint& band_at(const std::vector<StretchingBandPoint>& band,
   throw std::runtime_error("force level not in the Mills table");
 }
 
-std::vector<StretchingPoint> run_levels(int vertices, const std::vector<double>& forces_pN) {
-  StretchingExperiment experiment(make_rbc_mesh({.vertex_count = vertices}), MembraneParameters{}, quasi_static_settings(),
+std::vector<StretchingPoint> run_levels(int vertices, const std::vector<double>& forces_pN,
+                                       const MembraneParameters& membrane = MembraneParameters{}) {
+  StretchingExperiment experiment(make_rbc_mesh({.vertex_count = vertices}), membrane, quasi_static_settings(),
                                   StretchingSetup{});
   std::vector<StretchingPoint> out;
   for (const double f : forces_pN) out.push_back(experiment.run_force(f * 1e-12));
@@ -69,4 +70,20 @@ TEST(StretchingValidation, SameShearModulusGivesTheSameCurveAt642Vertices) {
     // is more mesh-sensitive (measured +5% at 108.8 pN, +7% at 193 pN at 642 vertices): only its band is asserted.
     EXPECT_NEAR(fine[i].axial_m / coarse[i].axial_m, 1.0, 0.02) << forces_pN[i];
   }
+}
+
+TEST(StretchingValidation, NegativeControlTwiceTheShearModulusLeavesTheMillsBand) {
+  // The band must be able to fail: at small strain the stretch goes as F / mu, so a membrane twice as stiff as the
+  // default (2.5 uN/m) stretches about half as far, below the band's lower axial edge at the upper forces.
+  const auto band = read_stretching_band(default_stretching_band_csv());
+  MembraneParameters stiff;
+  stiff.shear_modulus_N_m *= 2.0;
+  const std::vector<double> forces_pN = {108.8, 193.0};
+  const auto points = run_levels(258, forces_pN, stiff);
+  int outside = 0;
+  for (std::size_t i = 0; i < forces_pN.size(); ++i) {
+    const auto& b = band_at(band, forces_pN[i]);
+    if (!b.axial_inside(points[i].axial_m) || !b.transverse_inside(points[i].transverse_m)) ++outside;
+  }
+  EXPECT_EQ(outside, 2) << "a 2x shear modulus stayed inside the Mills band";
 }
