@@ -9,6 +9,7 @@
 
 #include "common/run_context.hpp"
 #include "resolved/cases/cell_simulation.hpp"
+#include "resolved/cases/plate_cell_checks.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
 #include "resolved/measure/cell_shape.hpp"
@@ -145,6 +146,8 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                  loop.timing_table());
   nlohmann::json summary;
   summary["results"] = series.results();
+  const common::CheckList checks = plate_cell_checks(c, summary["results"], series.samples());
+  checks.write_to(summary);
   summary["dx_m"] = c.numerics.dx_m;
   summary["dt_s"] = c.numerics.dt_s;
   summary["tau"] = c.numerics.collision.tau;
@@ -157,7 +160,8 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
   summary["membrane_solve"] = membrane_solve_summary(r.membrane->statistics());
   ctx.write_summary(summary);
-  return 0;
+  if (!checks.checks().empty()) checks.print(type);
+  return checks.exit_code();
 }
 
 }  // namespace

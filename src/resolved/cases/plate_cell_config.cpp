@@ -6,6 +6,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -54,6 +55,23 @@ void read_run(hs::common::ConfigSection r, hs::common::ConfigSection o, PlateCel
   c.vtk_every_s = o.non_negative_or("vtk_every_s", 0.0);
 }
 
+void read_check(hs::common::ConfigSection k, PlateCellConfig& c) {
+  if (c.flow == PlateFlow::poiseuille) {
+    c.expect_toward_centreline = k.boolean_or("toward_centreline", false);
+    return;
+  }
+  c.expect_flow_mode = k.one_of_or("flow_mode", {"", "tumbling", "tank-treading", "intermediate", "steady"}, "");
+  if (k.has("period_over_jeffery")) {
+    const std::vector<double> band = k.numbers_in("period_over_jeffery", 0.01, 100.0, 2);
+    if (band.size() != 2 || band[0] >= band[1]) {
+      k.fail("period_over_jeffery", "must be [min, max] with min < max (the band of the tumbling period / Jeffery's)");
+    }
+    if (c.expect_flow_mode != "tumbling") k.fail("period_over_jeffery", "applies to flow_mode = \"tumbling\" only");
+    c.period_over_jeffery_min = band[0];
+    c.period_over_jeffery_max = band[1];
+  }
+}
+
 }  // namespace
 
 PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bool quick) {
@@ -77,6 +95,7 @@ PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bo
   auto numerics = root.section("numerics");
   c.numerics = read_cell_numerics(numerics);
   read_run(root.section("run"), root.section_or_empty("output"), c);
+  read_check(root.section_or_empty("check"), c);
   file.finish();
   derive_cell_numerics(c.numerics, c.kinematic_viscosity_m2_s, c.u_max_m_s, numerics);
   const double dt = c.numerics.dt_s;

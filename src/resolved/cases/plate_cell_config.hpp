@@ -3,6 +3,8 @@
 // and `migration` (plane Poiseuille flow driven by a body force), with their derived lattice values.
 #pragma once
 
+#include <string>
+
 #include "common/config/config_file.hpp"
 #include "resolved/cases/cell_numerics.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
@@ -36,6 +38,11 @@ struct PlateCellConfig {
   double checkpoint_every_wall_s = 0.0;
   // [output]
   double vtk_every_s = 0.0;         // 0: only the final frame
+  // [check] (optional; absent: the run measures only): what the run must show, else exit 1
+  std::string expect_flow_mode;        // shear: "tumbling" | "tank-treading" | "intermediate" | "steady"; "" unchecked
+  double period_over_jeffery_min = 0;  // shear, tumbling: band of the tumbling period / Jeffery's (0, 0: unchecked)
+  double period_over_jeffery_max = 0;
+  bool expect_toward_centreline = false;   // migration: the offset from the centreline shrinks, without turning back
   // derived
   long sample_every_steps = 0;
   long spin_up_steps = 0;           // migration: the drive is switched on smoothly over these steps (shear: 0)

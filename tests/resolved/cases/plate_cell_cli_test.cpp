@@ -55,9 +55,12 @@ TEST(ShearCli, QuickRunGivesAFlowModeAndTheGroups) {
   std::string log;
   ASSERT_EQ(run("run --quiet --quick " + dir.string() + " --output " + out.string(), &log), 0) << log;
   expect_finite_series(out, 40);
-  const auto r = summary(out)["results"];
-  const std::string mode = r["flow_mode"].get<std::string>();
-  EXPECT_TRUE(mode == "tumbling" || mode == "tank-treading" || mode == "intermediate" || mode == "steady") << mode;
+  const auto s = summary(out);
+  const auto r = s["results"];
+  // 8 ms cannot show the mode (2 Jeffery periods, 97 ms): the case's checks are skipped and say so, never passed.
+  EXPECT_EQ(s["checks_skipped"].get<int>(), 2) << s["checks"].dump();
+  EXPECT_EQ(s["checks_failed"].get<int>(), 0) << s["checks"].dump();
+  EXPECT_NE(log.find("skipped flow mode tumbling"), std::string::npos) << log;
   EXPECT_NEAR(r["shear_rate_1_s"].get<double>(), 400.0, 1e-12);
   EXPECT_NEAR(r["ca"].get<double>(), 1.025e-3 * 400.0 * 3.91e-6 / 1.0e-4, 1e-12);   // mu gamma a / k_s
   EXPECT_NEAR(r["reynolds"].get<double>(), 400.0 * 24e-6 * 24e-6 / 1e-6, 1e-12);
@@ -72,15 +75,19 @@ TEST(ShearCli, QuickRunGivesAFlowModeAndTheGroups) {
   EXPECT_TRUE(fs::exists(out / "fields.pvd"));
 }
 
-TEST(MigrationCli, QuickRunWritesTheLateralPosition) {
-  // 40 samples of 0.1 ms = 4 ms (420 steps): the drive spins up and the cell starts moving; migration itself takes
-  // ~0.1 s (`hemoscale run cases/resolved/migration`), too long for CI.
-  const auto dir = write_variant("migration", "quick", "sample_every_s = 1.0e-3", "sample_every_s = 1.0e-4");
+TEST(MigrationCli, QuickRunMovesTowardTheCentrelineWithoutTurningBack) {
+  // 40 samples of 1 ms = 40 ms (~12 s of one core): past the 0.6 ms spin-up the cell released at y0 = 0.3 H moves
+  // toward the centreline (measured 0.30 -> 0.42 H; it reaches it after ~0.15 s). The case's [check] asserts that the
+  // offset shrank and never grew back by more than the centroid's 0.1 dx jitter (plate_cell_checks.cpp).
+  const auto dir = write_variant("migration", "quick", "vtk_every_s = 0.02", "vtk_every_s = 0.02");
   const auto out = dir / "out";
   std::string log;
   ASSERT_EQ(run("run --quiet --quick " + dir.string() + " --output " + out.string(), &log), 0) << log;
   expect_finite_series(out, 40);
-  const auto r = summary(out)["results"];
+  const auto s = summary(out);
+  EXPECT_EQ(s["checks"].size(), 2U) << s.dump();
+  EXPECT_TRUE(s["passed"].get<bool>()) << s["checks"].dump();
+  const auto r = s["results"];
   EXPECT_NEAR(r["reynolds"].get<double>(), 0.1, 1e-12);
   EXPECT_NEAR(r["u_max_m_s"].get<double>(), 0.1 * 1e-6 / 24e-6, 1e-15);
   for (const char* key : {"final_y_over_h", "migration_speed_m_s", "lateral_position", "half_offset_time_s", "ca", "ca_initial"}) {

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/pries1992.hpp"
 #include "common/config/config_file.hpp"
 #include "common/errors.hpp"
 #include "unresolved/cases/tube_pries.hpp"
@@ -36,12 +37,17 @@ TEST(TubePriesCase, CommittedCaseRunsAndSummarises) {
                           "pries_relative_apparent_viscosity", "ht_d_error_pct", "mu_rel_error_pct", "groups"}) {
     EXPECT_TRUE(s.contains(key)) << key;
   }
-  // Physical bounds, not accuracy (the quick run is 20 steps): 0 < Ht_d < 1 and the cells slow the flow a bit.
+  // Physical bounds, not accuracy (the quick run is 20 steps): 0 < Ht_d < 1, and cells released at rest in a fluid
+  // made more viscous by them can only slow the flow against the plasma-only run of the same 20 steps: mu_rel > 1.
   EXPECT_GT(s["discharge_hematocrit"].get<double>(), 0.0);
   EXPECT_LT(s["discharge_hematocrit"].get<double>(), 1.0);
-  EXPECT_GT(s["relative_apparent_viscosity"].get<double>(), 0.9);
-  // Pries 1992 at D = 30 um, Ht_T = 0.0998 (the achieved insertion): Ht_D = 0.1594 (pries1992 tests).
-  EXPECT_NEAR(s["pries_discharge_hematocrit"].get<double>(), 0.1594, 5e-4);
+  EXPECT_GT(s["relative_apparent_viscosity"].get<double>(), 1.0);
+  // The reference is Pries 1992 at this tube and the insertion's achieved Ht_T, through the law that
+  // tests/analysis/pries1992_test checks against the published grid.
+  const double d_um = s["diameter_um"].get<double>();
+  const double ht_d_pries = hs::analysis::discharge_from_tube_hematocrit(d_um, s["tube_hematocrit"].get<double>());
+  EXPECT_NEAR(s["pries_discharge_hematocrit"].get<double>(), ht_d_pries, 1e-12);
+  EXPECT_NEAR(s["pries_relative_apparent_viscosity"].get<double>(), hs::analysis::relative_apparent_viscosity(d_um, ht_d_pries), 1e-12);
   EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
 }
 
