@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "closures/closure_check.hpp"
 #include "closures/closure_fit.hpp"
 #include "closures/fit_request.hpp"
 #include "common/errors.hpp"

@@ -19,11 +19,6 @@ namespace hs::closures {
 /// ConfigError for a dataset that cannot be read or lacks a column; returns the closure as written.
 ClosureFile run_fit(const FitRequest& request, const std::filesystem::path& out_dir, bool quiet = false);
 
-/// Loads a closure file (ConfigError if it is bad) and, when `<name>.reference.csv` lies beside it, checks
-/// that the compiled expression reproduces that table to 1e-12 relative. Returns a one-paragraph summary;
-/// throws hs::common::NumericalError on a mismatch.
-std::string check_closure(const std::filesystem::path& file);
-
 /// Runs tools/plot_fit.py on a fit folder (report.png) when /usr/bin/python3 and the script exist.
 /// Returns false (and writes nothing) otherwise.
 bool render_fit_report(const std::filesystem::path& out_dir);

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "closures/closure_fit.hpp"
+#include "closures/closure_check.hpp"
 
 namespace fs = std::filesystem;
 
