@@ -51,11 +51,4 @@ double relative_apparent_viscosity(double diameter_um, double discharge_hematocr
   return 1.0 + (mu45 - 1.0) * (std::pow(1.0 - discharge_hematocrit, c) - 1.0) / (std::pow(0.55, c) - 1.0);
 }
 
-double bulk_relative_viscosity(double hematocrit) {
-  if (!(hematocrit >= 0.0 && hematocrit < 1.0)) throw std::invalid_argument("Pries 1992: hematocrit must be in [0, 1)");
-  constexpr double c = -0.8;   // viscosity_shape_exponent(D) for D -> infinity
-  constexpr double mu45 = 3.2;  // relative_viscosity_at_045(D) for D -> infinity
-  return 1.0 + (mu45 - 1.0) * (std::pow(1.0 - hematocrit, c) - 1.0) / (std::pow(0.55, c) - 1.0);
-}
-
 }  // namespace hs::analysis

@@ -23,9 +23,4 @@ double viscosity_shape_exponent(double diameter_um);
 /// eta_rel = 1 + (mu_0.45 - 1) ((1 - Ht_D)^C - 1) / ((1 - 0.45)^C - 1).
 double relative_apparent_viscosity(double diameter_um, double discharge_hematocrit);
 
-/// The same law in the wide-tube limit (D -> infinity: mu_0.45 = 3.2, C = -0.8), where the Fahraeus-Lindqvist
-/// effect is gone: blood's bulk relative viscosity at hematocrit H, 1 + 2.2 ((1 - H)^-0.8 - 1) / (0.55^-0.8 - 1)
-/// (2.87 H for small H, near Einstein's 2.5 H for rigid spheres).
-double bulk_relative_viscosity(double hematocrit);
-
 }  // namespace hs::analysis

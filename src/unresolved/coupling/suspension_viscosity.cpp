@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/pries1992.hpp"
 #include "common/errors.hpp"
+#include "unresolved/coupling/bulk_blood_viscosity.hpp"
 
 namespace hs::unresolved {
 
@@ -31,7 +31,7 @@ double relative_viscosity(SuspensionViscosity model, double phi) {
   phi = std::clamp(phi, 0.0, 0.9);   // eps_min clipping bounds phi below 0.9 anyway
   switch (model) {
     case SuspensionViscosity::einstein: return 1.0 + 2.5 * phi;
-    case SuspensionViscosity::pries_bulk: return hs::analysis::bulk_relative_viscosity(phi);
+    case SuspensionViscosity::pries_bulk: return bulk_blood_relative_viscosity(phi);
     case SuspensionViscosity::none: break;
   }
   return 1.0;

@@ -16,7 +16,8 @@ namespace hs::unresolved {
 ///   none:       1
 ///   einstein:   1 + 2.5 phi (Einstein 1911, rigid spheres, dilute)
 ///   pries_bulk: blood's in-vitro high-shear viscosity in the wide-tube limit of Pries et al. 1992 (where no
-///               Fahraeus-Lindqvist effect is left; analysis/pries1992.hpp), 2.87 phi for small phi.
+///               Fahraeus-Lindqvist effect is left; bulk_blood_viscosity.hpp), 2.87 phi for small phi. A
+///               sensitivity choice: it comes from the fit `validate pries` compares with (see that header).
 /// With a cell-free layer near the wall, the tube's apparent viscosity then follows from the phi profile.
 enum class SuspensionViscosity { none, einstein, pries_bulk };
 
