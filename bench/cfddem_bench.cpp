@@ -19,6 +19,7 @@
 #include "common/geometry/tube.hpp"
 #include "common/run_folder.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
+#include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
 
@@ -87,6 +88,7 @@ Measured measure(long n_rbc, int repetitions) {
 }  // namespace
 
 int run_cfddem_bench(const hs::common::TaskOptions& options) {
+  hs::unresolved::require_one_rank("bench cfddem");
   const std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
   nlohmann::json j;
   fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s\n");

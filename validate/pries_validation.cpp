@@ -19,6 +19,7 @@
 #include "common/io/csv_writer.hpp"
 #include "common/run_folder.hpp"
 #include "unresolved/cases/tube_pries.hpp"
+#include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 
 namespace hs::unresolved {
@@ -194,14 +195,17 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
 }  // namespace
 
 int validate_pries(const hs::common::TaskOptions& options) {
+  require_one_rank("validate pries");
   return run_pries_table(options, hs::closures::WallCorrection::none, "pries_validation");
 }
 
 int validate_pries_wall(const hs::common::TaskOptions& options) {
+  require_one_rank("validate pries-wall");
   return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre, "pries_wall_validation");
 }
 
 int validate_pries_wall_relative(const hs::common::TaskOptions& options) {
+  require_one_rank("validate pries-wall-relative");
   return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre_relative, "pries_wall_relative_validation");
 }
 

@@ -15,14 +15,17 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
-/// `hemoscale ARGS`, with HS_BIN (the executable's path) defined by the test target.
-inline CommandResult run_hemoscale(const std::string& args) {
-  FILE* pipe = popen((std::string(HS_BIN) + " " + args + " 2>&1").c_str(), "r");
+/// A shell command line, stdout and stderr captured together.
+inline CommandResult run_shell(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   std::string out;
   std::array<char, 4096> buf{};
   while (fgets(buf.data(), static_cast<int>(buf.size()), pipe) != nullptr) out += buf.data();
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
+
+/// `hemoscale ARGS`, with HS_BIN (the executable's path) defined by the test target.
+inline CommandResult run_hemoscale(const std::string& args) { return run_shell(std::string(HS_BIN) + " " + args); }
 
 }  // namespace hs::test

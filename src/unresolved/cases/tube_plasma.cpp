@@ -21,6 +21,7 @@
 #include "common/run_folder.hpp"
 #include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
+#include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
 #include "common/fluid_properties.hpp"
 
@@ -156,6 +157,7 @@ nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, con
 }  // namespace
 
 int run_tube_plasma(const hs::common::CaseRequest& request) {
+  require_one_rank("tube-plasma");   // before the run folder is made
   const TubePlasmaConfig c = parse(*request.config, request.quick);
   hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-plasma");
   const hs::common::RunFolder& folder = ctx.folder();

@@ -8,10 +8,12 @@
 #include "common/run_context.hpp"
 #include "common/run_folder.hpp"
 #include "unresolved/cases/tube_pries.hpp"
+#include "unresolved/coupling/one_rank_guard.hpp"
 
 namespace hs::unresolved {
 
 int run_tube_pries(const hs::common::CaseRequest& request) {
+  require_one_rank("tube-pries");   // before the run folder is made
   const TubePriesConfig c = parse_tube_pries(*request.config, request.quick);
   hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-pries");
   hs::common::Log& log = ctx.log();

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// The unresolved stage on two MPI ranks: it stops at once with exit code 2 and says to run on one rank (issue 21),
+// instead of running the whole problem on every rank.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "support/run_command.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// `mpiexec -n 2 hemoscale ARGS`.
+hs::test::CommandResult run_on_two_ranks(const std::string& args) {
+  return hs::test::run_shell(std::string(HS_MPIEXEC) + " -n 2 " + HS_MPIEXEC_FLAGS + " " + HS_BIN + " " + args);
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + what.size())) ++n;
+  return n;
+}
+
+/// Exit 2, the message once (rank 0 prints it) naming the run, the rank count and the remedy.
+void expect_refused(const hs::test::CommandResult& r, const std::string& what) {
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_EQ(count(r.output, "error: " + what + ": started on 2 MPI ranks"), 1u) << r.output;
+  EXPECT_NE(r.output.find("runs on one rank only"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mpirun -np 1"), std::string::npos) << r.output;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("hs_mpi_guard_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+TEST(MpiGuard, TubePriesOnTwoRanksStopsBeforeWritingAnything) {
+  const fs::path out = fresh_dir("tube_pries");
+  const auto r = run_on_two_ranks("run --quiet --quick " + (fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries").string() +
+                                  " --output " + out.string());
+  expect_refused(r, "tube-pries");
+  EXPECT_FALSE(fs::exists(out)) << "the run folder was made before the guard";
+}
+
+TEST(MpiGuard, TubePlasmaOnTwoRanksStops) {
+  const fs::path out = fresh_dir("tube_plasma");
+  const auto r = run_on_two_ranks("run --quiet --quick " + (fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-plasma").string() +
+                                  " --output " + out.string());
+  expect_refused(r, "tube-plasma");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(MpiGuard, PriesValidationsAndTheCfdDemBenchOnTwoRanksStop) {
+  const fs::path json = fresh_dir("validate") / "pries.json";
+  for (const char* name : {"pries", "pries-wall", "pries-wall-relative"}) {
+    expect_refused(run_on_two_ranks(std::string("validate --quick ") + name + " --json " + json.string()),
+                   std::string("validate ") + name);
+  }
+  expect_refused(run_on_two_ranks("bench --quick cfddem"), "bench cfddem");
+}
+
+}  // namespace
