@@ -39,16 +39,16 @@ fs::path fresh_dir(const std::string& name) {
 
 TEST(MpiGuard, TubePriesOnTwoRanksStopsBeforeWritingAnything) {
   const fs::path out = fresh_dir("tube_pries");
-  const auto r = run_on_two_ranks("run --quiet --quick " + (fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries").string() +
-                                  " --output " + out.string());
+  const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries";
+  const auto r = run_on_two_ranks("run --quiet --quick " + case_dir.string() + " --output " + out.string());
   expect_refused(r, "tube-pries");
   EXPECT_FALSE(fs::exists(out)) << "the run folder was made before the guard";
 }
 
 TEST(MpiGuard, TubePlasmaOnTwoRanksStops) {
   const fs::path out = fresh_dir("tube_plasma");
-  const auto r = run_on_two_ranks("run --quiet --quick " + (fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-plasma").string() +
-                                  " --output " + out.string());
+  const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-plasma";
+  const auto r = run_on_two_ranks("run --quiet --quick " + case_dir.string() + " --output " + out.string());
   expect_refused(r, "tube-plasma");
   EXPECT_FALSE(fs::exists(out));
 }
