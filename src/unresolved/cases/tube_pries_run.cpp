@@ -8,6 +8,7 @@
 #include "common/run_context.hpp"
 #include "common/run_folder.hpp"
 #include "unresolved/cases/tube_pries.hpp"
+#include "unresolved/cases/tube_pries_checks.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 
 namespace hs::unresolved {
@@ -35,10 +36,16 @@ int run_tube_pries(const hs::common::CaseRequest& request) {
     progress.update(++done);
   }, restart);
   progress.finish();
-  ctx.write_summary(r.summary);
-  log.info("Ht_d = {:.4f} (Pries {:.4f}, {:+.1f}%), mu_rel = {:.4f} (Pries {:.4f}, {:+.1f}%); outputs in {}", r.ht_d, r.ht_d_pries,
-           r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct, ctx.folder().path().string());
-  return 0;
+  hs::common::CheckList checks;
+  check_tube_pries(c, r, {.quick = request.quick}, checks);
+  nlohmann::json summary = r.summary;
+  checks.write_to(summary);
+  ctx.write_summary(summary);
+  log.info("Ht_d = {:.4f} (Pries {:.4f}, {:+.1f}%), mu_rel = {:.4f} (Pries {:.4f}, {:+.1f}%){}; outputs in {}", r.ht_d,
+           r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct,
+           request.quick ? " (--quick: not a comparison, the run is far from steady)" : "", ctx.folder().path().string());
+  if (ctx.rank() == 0) checks.print("tube-pries");
+  return checks.exit_code();
 }
 
 }  // namespace hs::unresolved

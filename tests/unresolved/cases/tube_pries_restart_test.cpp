@@ -114,7 +114,8 @@ TEST(TubePriesRestart, RunFolderResumeRewritesTheTimeSeries) {
     (void)file->root().section("case").string("type");
     const hs::common::CaseRequest request{.case_dir = fs::temp_directory_path(), .config = file.get(), .output_dir = out,
                                           .resume = resume, .quiet = true, .quick = false};
-    ASSERT_EQ(hs::unresolved::run_tube_pries(request), 0);
+    // 2 and 4 steps are far from a steady state: the case's own check fails (exit 1) and the outputs are written.
+    ASSERT_EQ(hs::unresolved::run_tube_pries(request), 1);
   }
   const auto table = hs::common::read_csv(out / "timeseries.csv");
   const auto t = table.column("time_s");
