@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The npFEM solver: rest state without creep, Newton's second law for a rigid push, centre constraints,
-// PD fallback vs L-BFGS, a bit-for-bit checkpoint round trip, a non-finite force refused and an unreachable one reported.
+// The npFEM solver: rest state without creep, Newton's second law for a rigid push, centre constraints, PD fallback
+// vs L-BFGS, a bit-for-bit checkpoint round trip, a non-finite force refused and an unreachable one reported.
 #include <gtest/gtest.h>
 
 #include <algorithm>
