@@ -4,96 +4,42 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "bench/regression_bench.hpp"
+#include "bench/bench_targets.hpp"
+#include "common/check_list.hpp"
 #include "common/run_folder.hpp"
 #include "regression/compiled_program.hpp"
+#include "regression/feynman_table.hpp"
 #include "regression/infix.hpp"
 #include "regression/model_selection.hpp"
-#include "regression/polynomial.hpp"
-#include "regression/simplify.hpp"
 
 namespace hs::bench {
 namespace {
 
 namespace hsr = hs::regression;
 
-// reference/validation/feynman_sr_subset10.csv (AI Feynman subset; formula, variables, sampling ranges).
-constexpr const char* feynman_csv = R"(I.6.2a|exp(-theta**2/2)/sqrt(2*pi)|theta:[1,3]
-I.8.14|sqrt((x2-x1)**2+(y2-y1)**2)|x1:[1,5]; x2:[1,5]; y1:[1,5]; y2:[1,5]
-I.12.1|mu*Nn|mu:[1,5]; Nn:[1,5]
-I.13.4|1/2*m*(v**2+u**2+w**2)|m:[1,5]; v:[1,5]; u:[1,5]; w:[1,5]
-I.14.4|1/2*k_spring*x**2|k_spring:[1,5]; x:[1,5]
-I.24.6|1/2*m*(omega**2+omega_0**2)*1/2*x**2|m:[1,3]; omega:[1,3]; omega_0:[1,3]; x:[1,3]
-I.29.16|sqrt(x1**2+x2**2-2*x1*x2*cos(theta1-theta2))|x1:[1,5]; x2:[1,5]; theta1:[1,5]; theta2:[1,5]
-I.39.22|n*kb*T/V|n:[1,5]; T:[1,5]; V:[1,5]; kb:[1,5]
-I.43.31|mob*kb*T|mob:[1,5]; T:[1,5]; kb:[1,5]
-I.47.23|sqrt(gamma*pr/rho)|gamma:[1,5]; pr:[1,5]; rho:[1,5])";
+/// The committed table (data/reference/feynman_sr_subset10.csv, AI Feynman subset: formula, variables, sampling ranges).
+const char* const feynman_csv = HS_DATA_DIR "/reference/feynman_sr_subset10.csv";
 
-struct Equation {
-  std::string id;
-  std::string formula;
-  std::vector<std::string> names;
-  std::vector<double> lo, hi;
-  hsr::Expression truth;
-};
+/// Documented target (issue 29, "the ten equations of today's bench stay at 10/10"): every equation recovered
+/// exactly by the full engine at the full budget.
+constexpr double kTargetExactFull = 10.0;
 
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) s.replace(p, from.size(), to);
-  return s;
-}
+using Equation = hsr::FeynmanEquation;
+using Sample = hsr::FeynmanSample;
 
-std::vector<Equation> equations() {
-  std::vector<Equation> out;
-  std::istringstream lines(feynman_csv);
-  std::string line;
-  while (std::getline(lines, line)) {
-    Equation eq;
-    const auto bar1 = line.find('|');
-    const auto bar2 = line.find('|', bar1 + 1);
-    eq.id = line.substr(0, bar1);
-    eq.formula = line.substr(bar1 + 1, bar2 - bar1 - 1);
-    std::istringstream vars(line.substr(bar2 + 1));
-    std::string item;
-    while (std::getline(vars, item, ';')) {
-      const auto colon = item.find(':');
-      eq.names.push_back(item.substr(item.find_first_not_of(' '), colon - item.find_first_not_of(' ')));
-      eq.lo.push_back(std::stod(item.substr(item.find('[') + 1)));
-      eq.hi.push_back(std::stod(item.substr(item.find(',') + 1)));
-    }
-    const std::string infix = replace_all(replace_all(eq.formula, "**", "^"), "pi", "3.141592653589793");
-    eq.truth = hsr::parse_infix(infix, eq.names);
-    out.push_back(std::move(eq));
-  }
-  return out;
-}
-
-struct Sample {
-  std::vector<std::vector<double>> x;
-  std::vector<double> y;
-};
-
-Sample sample(const Equation& eq, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  Sample s{std::vector<std::vector<double>>(eq.names.size(), std::vector<double>(n)), std::vector<double>(n)};
-  std::vector<double> point(eq.names.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < point.size(); ++j) {
-      point[j] = s.x[j][i] = std::uniform_real_distribution<double>(eq.lo[j], eq.hi[j])(rng);
-    }
-    s.y[i] = eq.truth.evaluate(point.data());
-  }
-  return s;
-}
+Sample sample(const Equation& eq, std::size_t n, std::uint64_t seed) { return hsr::sample_feynman(eq, n, seed); }
 
 struct Verdict {
   std::string expression;
@@ -102,11 +48,6 @@ struct Verdict {
   bool symbolic = false, exact = false;
   double seconds = 0.0;
 };
-
-std::string canonical(const hsr::Expression& e, const std::vector<std::string>& names) {
-  constexpr auto mode = hsr::SimplifyMode::Algebraic;
-  return hsr::to_infix(hsr::simplify(hsr::snap_constants(hsr::expand_polynomials(hsr::simplify(e, mode))), mode), names);
-}
 
 // Exact: the same canonical text as the truth, or test R^2 > 0.999999 with the right structure, taken to
 // mean the same variables and a relative deviation <= 1e-4 everywhere on 1000 fresh points.
@@ -120,7 +61,7 @@ Verdict judge(const Equation& eq, const hsr::Expression& model, double seconds) 
   for (std::size_t i = 0; i < p.size(); ++i) {
     v.max_rel_error = std::max(v.max_rel_error, std::abs(p[i] - fresh.y[i]) / std::abs(fresh.y[i]));
   }
-  v.symbolic = canonical(model, eq.names) == canonical(eq.truth, eq.names);
+  v.symbolic = hsr::symbolic_match(model, eq.truth, eq.names);
   const bool right_structure = model.variables() == eq.truth.variables() && v.max_rel_error <= 1e-4;
   v.exact = v.symbolic || (v.r2_test > 0.999999 && right_structure);
   v.seconds = seconds;
@@ -198,10 +139,13 @@ int run_regression_bench(const hs::common::TaskOptions& options) {
   nlohmann::json per_equation = nlohmann::json::array();
   int exact_full = 0, r2_full = 0, exact_gplearn = 0, r2_gplearn = 0;
   std::vector<double> sec_full, sec_gplearn;
-  for (const auto& eq : equations()) {
+  const std::vector<Equation> table = hsr::read_feynman_table(feynman_csv);
+  std::vector<std::string> missed;
+  for (const auto& eq : table) {
     const Verdict g = run_one(eq, false, options.quick, threads);
     const Verdict f = run_one(eq, true, options.quick, threads);
     exact_full += f.exact ? 1 : 0;
+    if (!f.exact) missed.push_back(eq.id);
     r2_full += f.r2_test > 0.999 ? 1 : 0;
     exact_gplearn += g.exact ? 1 : 0;
     r2_gplearn += g.r2_test > 0.999 ? 1 : 0;
@@ -215,19 +159,28 @@ int run_regression_bench(const hs::common::TaskOptions& options) {
                             {"gplearn", {{"expression", g.expression}, {"r2_test", g.r2_test}, {"exact", g.exact},
                                          {"symbolic_match", g.symbolic}, {"seconds", g.seconds}}}});
   }
-  fmt::print("exact recovery: full {}/10, gplearn {}/10; test R2 > 0.999: full {}/10, gplearn {}/10\n", exact_full,
-             exact_gplearn, r2_full, r2_gplearn);
+  const int n_eq = static_cast<int>(table.size());
+  fmt::print("exact recovery: full {}/{}, gplearn {}/{}; test R2 > 0.999: full {}/{}, gplearn {}/{}\n", exact_full, n_eq,
+             exact_gplearn, n_eq, r2_full, n_eq, r2_gplearn, n_eq);
+  // The target is judged at the full budget only: --quick (300 x 16) is a smoke test, its check is skipped.
+  hs::common::CheckList checks;
+  const std::optional<double> measured = options.quick ? std::nullopt : std::optional<double>(exact_full);
+  expect_at_least(checks, options, "exact_full", measured, kTargetExactFull,
+                  "issue #29: the ten equations of the bench stay at 10/10");
+  if (!missed.empty()) fmt::print("not recovered exactly by the full engine: {}\n", fmt::join(missed, ", "));
   fmt::print("seconds per equation (median): full {:.1f}, gplearn {:.1f} ({} threads)\n", median(sec_full),
              median(sec_gplearn), threads);
   if (options.json_file) {
-    nlohmann::json j{{"exact_full", exact_full}, {"r2_full", r2_full}, {"exact_gplearn", exact_gplearn},
+    nlohmann::json j{{"exact_full", exact_full}, {"missed_full", missed}, {"r2_full", r2_full}, {"exact_gplearn", exact_gplearn},
                      {"r2_gplearn", r2_gplearn}, {"seconds_median", median(sec_full)},
                      {"seconds_median_gplearn", median(sec_gplearn)}, {"threads", threads},
                      {"evaluations_per_second", rate}, {"quick", options.quick}, {"equations", per_equation},
                      {"provenance", hs::common::provenance()}};
+    checks.write_to(j);
     hs::common::write_json(*options.json_file, j);
   }
-  return 0;
+  checks.print("bench regression");
+  return checks.exit_code();
 }
 
 }  // namespace hs::bench

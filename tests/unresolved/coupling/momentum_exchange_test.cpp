@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Momentum exchange of the coupling: in a fully periodic box the fluid gets exactly minus the DEM's drag
-// impulse, so fluid + particle momentum is conserved; and a sphere released in uniform flow relaxes to it.
+// impulse, so fluid + particle momentum is conserved; and a sphere released in fluid at rest ends at the analytic
+// common velocity m_p v0 / (m_p + m_f).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,30 +82,81 @@ TEST(MomentumExchange, FluidPlusParticleMomentumIsConservedInAPeriodicBox) {
   std::printf("explicit exchange: |dP| / |P0| = %.3e\n", norm(p1 - p0) / norm(p0));
 }
 
-TEST(MomentumExchange, ImplicitCouplingRelaxesParticleAndFluidToACommonVelocity) {
+/// Coupling steps of n_coupling DEM steps in 1.7 ms.
+int relaxation_steps(int n_coupling) {
+  return static_cast<int>(std::ceil(1.7e-3 / (n_coupling * 0.1 * rayleigh_time_s(default_particle_params()))));
+}
+
+/// One sphere at v0 along z in the fluid at rest; returns v_p / U - 1 and <u_f> / U - 1 (fluid momentum over fluid mass)
+/// after `steps` coupling steps, U the analytic common velocity.
+struct Relaxed {
+  double particle_error;
+  double fluid_error;
+  double momentum_error;   // |P1 - P0| / P0, pending imbalance included
+};
+Relaxed relax_one_sphere(const CouplingSettings& settings, int steps) {
   const double dt_dem = 0.1 * rayleigh_time_s(default_particle_params());
-  PeriodicBox box(dt_dem, 50);
-  box.dem.add_particle({30e-6, 30e-6, 30e-6}, {0.0, 0.0, 1e-3});
-  CfdDemCoupling coupling(box.fluid, box.dem, {.n_coupling = 50, .pressure_force = false, .viscous_force = false}, stokes());
-  const Vec3 p0 = coupling.particle_momentum_kg_m_s();
-  double max_pending = 0.0;
-  for (int s = 0; s < 200; ++s) {
-    coupling.step();
-    max_pending = std::max(max_pending, norm(coupling.exchange().pending_N_s));
-  }
-  // Fluid + particles minus the imbalance still to be given back. Not round-off: with Ksl in the diagonal A the
-  // PISO splitting (final u from H(u*) with non-uniform A) leaves the fluid's momentum change off the exchange
-  // terms by a transient; measured 1.1% over the relaxation, bounded here by 2%. explicit_impulse mode is the
-  // round-off-conservative one (test above).
-  const Vec3 p1 = coupling.fluid_momentum_kg_m_s() + coupling.particle_momentum_kg_m_s() - coupling.exchange().pending_N_s;
-  for (int a = 0; a < 3; ++a) EXPECT_NEAR(p1[a], p0[a], 2e-2 * norm(p0)) << "axis " << a;
-  std::printf("implicit coupling: |dP| / |P0| = %.3e\n", norm(p1 - p0) / norm(p0));
-  // The pending imbalance is the one-step transient Ksl (U^n - U^{n+1}): bounded by a few % of the exchange.
-  EXPECT_LT(max_pending, 0.1 * norm(p0));
-  std::printf("implicit coupling: max pending imbalance %.3e of the initial momentum\n", max_pending / norm(p0));
-  const double v = box.dem.particles().velocity_m_s()[2][0];
-  EXPECT_GT(v, 0.0);
-  EXPECT_LT(v, 0.2 * 1e-3);   // the sphere gave most of its momentum to the (much heavier) fluid
+  PeriodicBox box(dt_dem, settings.n_coupling);
+  const double v0 = 1e-3;
+  box.dem.add_particle({30e-6, 30e-6, 30e-6}, {0.0, 0.0, v0});
+  CfdDemCoupling coupling(box.fluid, box.dem, settings, stokes());
+  // Momentum m_p v0 shared by the sphere and the fluid of the box (its volume less the sphere's where eps is fed back).
+  const ParticleParams p = default_particle_params();
+  const double fluid_mass = 1025.0 * (std::pow(PeriodicBox::side_m, 3) - (settings.void_fraction_feedback ? p.volume_m3() : 0.0));
+  const double u_common = p.mass_kg() * v0 / (p.mass_kg() + fluid_mass);
+  const double p0 = coupling.particle_momentum_kg_m_s()[2];
+  for (int s = 0; s < steps; ++s) coupling.step();
+  const double p_fluid = coupling.fluid_momentum_kg_m_s()[2];
+  const double p1 = p_fluid + coupling.particle_momentum_kg_m_s()[2] - coupling.exchange().pending_N_s[2];
+  return {box.dem.particles().velocity_m_s()[2][0] / u_common - 1.0, p_fluid / fluid_mass / u_common - 1.0,
+          std::abs(p1 - p0) / p0};
+}
+
+// Dilute limit (eps = 1): the sphere and the fluid end at U = m_p v0 / (m_p + rho V_box) exactly. The slowest decay is
+// the box's first diffusive mode, rate 4 pi^2 nu / L^2 = 1.3e4 /s (the sphere's own tau_p = 1.6 us is far faster);
+// after 1.7 ms it has decayed by e^-22 = 3e-10 from an initial v0 / U = 2e3: 1e-6 of U. Round-off of the momentum
+// solves (tolerance 1e-13) is far below. n_coupling = 10: dt_CFD = 1.7 us, inside the explicit mode's stability limit
+// rho / Ksl = 11 us.
+TEST(MomentumExchange, DiluteExplicitExchangeReachesTheAnalyticCommonVelocity) {
+  const Relaxed r = relax_one_sphere({.n_coupling = 10, .fluid_drag = FluidDrag::explicit_impulse,
+                                      .void_fraction_feedback = false, .pressure_force = false, .viscous_force = false},
+                                     relaxation_steps(10));
+  EXPECT_NEAR(r.particle_error, 0.0, 1e-6);
+  EXPECT_NEAR(r.fluid_error, 0.0, 1e-6);
+  EXPECT_LT(r.momentum_error, 1e-10);   // as the explicit test above
+  std::printf("dilute explicit_impulse: v_p / U - 1 = %.2e, <u_f> / U - 1 = %.2e, |dP| / P0 = %.2e\n", r.particle_error,
+              r.fluid_error, r.momentum_error);
+}
+
+// The same with Ksl in the fluid matrix (the default). It is not exact: the solver's row takes Ksl Us at a face as
+// (face mean of Ksl) x (face mean of Us), and Us is 0 in the cells without particles, so at the faces around the sphere's
+// cells the fluid is pulled towards half the sphere's velocity even when both move together; the deferred give-back
+// then balances that pull, and the sphere settles 1.2% faster than the fluid (with the face mean of the product,
+// Ksl-weighted, it reaches U to 5e-9 like the explicit mode: reported, not changed here, because it also changes
+// two-way runs with d_p > dx, sphere_in_tube_drag_test). Band: the "few per cent", 2%.
+TEST(MomentumExchange, DiluteImplicitExchangeReachesTheCommonVelocityWithinTwoPercent) {
+  const Relaxed r = relax_one_sphere({.n_coupling = 10, .fluid_drag = FluidDrag::implicit, .void_fraction_feedback = false,
+                                      .pressure_force = false, .viscous_force = false},
+                                     relaxation_steps(10));
+  EXPECT_NEAR(r.particle_error, 0.0, 0.02);
+  EXPECT_NEAR(r.fluid_error, 0.0, 0.02);
+  std::printf("dilute implicit: v_p / U - 1 = %.2e, <u_f> / U - 1 = %.2e, |dP| / P0 = %.2e\n", r.particle_error,
+              r.fluid_error, r.momentum_error);
+}
+
+// Model A with the void-fraction feedback and the sphere's pressure-gradient and viscous forces. (The test this replaces
+// had the feedback without those forces: then the fluid's -eps grad p and eps-weighted stress do not integrate to zero
+// over the box and 1.1% of the momentum appears, in the explicit mode too, so it was not the PISO splitting.)
+// dt_CFD = 8.3 us > tau_p: the implicit mode's regime. Band: the "few per cent", 2%; measured 1.1% for the
+// sphere, of which 0.3% is the discrete model A (its forces on the sphere are interpolated at the centre, the fluid's
+// are face sums of the marker-quantised eps; the same with the fix above) and the rest the face value above.
+TEST(MomentumExchange, ImplicitModelAReachesTheAnalyticCommonVelocity) {
+  const Relaxed r = relax_one_sphere({.n_coupling = 50}, 200);
+  EXPECT_NEAR(r.particle_error, 0.0, 0.02);
+  EXPECT_NEAR(r.fluid_error, 0.0, 0.02);
+  EXPECT_LT(r.momentum_error, 0.02);
+  std::printf("model A implicit: v_p / U - 1 = %.2e, <u_f> / U - 1 = %.2e, |dP| / P0 = %.2e\n", r.particle_error,
+              r.fluid_error, r.momentum_error);
 }
 
 }  // namespace

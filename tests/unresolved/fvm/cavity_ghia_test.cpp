@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
-// 2D lid-driven cavity at Re = 100 (one periodic cell in z) against Ghia, Ghia & Shin 1982 centrelines,
+// 2D lid-driven cavity at Re = 100 and 400 (one periodic cell in z) against Ghia, Ghia & Shin 1982 centrelines,
 // and the Courant-number check.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
@@ -65,6 +67,86 @@ void check_ghia_centrelines(hs::unresolved::PressureCoupling coupling) {
   // the lid, so the band is 2% of the lid speed at every tabulated point (measured: 0.4% for u, 0.9% for v).
   EXPECT_LT(worst_u, 0.02);
   EXPECT_LT(worst_v, 0.02);
+}
+
+/// The steady Re = 400 cavity on n^2 cells: u on the vertical and v on the horizontal centreline at Ghia's points.
+struct Centrelines {
+  std::vector<double> u, v;
+};
+Centrelines steady_re400(int n, const std::vector<double>& y, const std::vector<double>& x) {
+  const Square square;
+  const FvmGrid grid(square, cavity_spec(n, 1.0));
+  // dt at Courant 0.8 on the lid speed (steady state only: the time error does not matter). 35 lid time units: the
+  // slowest mode decays by ~20x per 10 units (centreline change 5e-3 from t = 20 to 30, 2e-4 from 30 to 40 at 48^2).
+  FvmSolver solver(grid, {.density_kg_m3 = 1.0, .kinematic_viscosity_m2_s = 1.0 / 400.0}, {.dt_s = 0.8 / n}, {});
+  const long steps = static_cast<long>(35.0 * n / 0.8);
+  for (long s = 0; s < steps; ++s) solver.step();
+  const double z = 0.5 / n;
+  Centrelines c;
+  for (const double yq : y) c.u.push_back(solver.velocity_at({0.5, yq, z}).x);
+  for (const double xq : x) c.v.push_back(solver.velocity_at({xq, 0.5, z}).y);
+  return c;
+}
+
+/// Bound on the linear-interpolation error of velocity_at at each tabulated point on a grid of spacing h: h^2/8 |f''|,
+/// with |f''| the largest second divided difference of Ghia's own profile over the point's neighbours.
+std::vector<double> interpolation_bound(const std::vector<double>& s, const std::vector<double>& f, double h) {
+  std::vector<double> curvature(s.size(), 0.0);
+  for (std::size_t q = 1; q + 1 < s.size(); ++q) {
+    const double d1 = (f[q + 1] - f[q]) / (s[q + 1] - s[q]);
+    const double d0 = (f[q] - f[q - 1]) / (s[q] - s[q - 1]);
+    curvature[q] = std::abs(2.0 * (d1 - d0) / (s[q + 1] - s[q - 1]));
+  }
+  std::vector<double> bound(s.size());
+  for (std::size_t q = 0; q < s.size(); ++q) {
+    const double c = std::max({curvature[q], q > 0 ? curvature[q - 1] : 0.0, q + 1 < s.size() ? curvature[q + 1] : 0.0});
+    bound[q] = h * h / 8.0 * c;
+  }
+  return bound;
+}
+
+// Re = 400 against Ghia, Ghia & Shin 1982 (Tables I and II, Re = 400 columns). At Re = 400 the cell Reynolds number at
+// 32^2 is 12.5 and the raw profiles are off by up to 2.5% of the lid speed: a grid error. The band is therefore applied
+// to the grid-converged estimate, the Richardson extrapolation of 32^2 and 48^2 for the second-order central scheme,
+// u_inf = u_48 + k (u_48 - u_32), k = 1 / ((48/32)^2 - 1). Band: 1% of the lid speed (Ghia's 129^2 multigrid solution
+// agrees with later spectral results to about that, validation README), plus what the extrapolation cannot remove:
+// sampling the profile between grid values is a linear interpolation whose error h^2/8 |u''| depends on where the point
+// falls in a cell, not smoothly on h, so it enters as (1 + k) b_48 + k b_32. That matters only in the lid and wall
+// layers (|u''| ~ 130 under the lid: +2.6%); elsewhere it is ~1e-3. A viscosity 10% off (Re 360 or 440) fails.
+// Ghia's v = -0.23827 at x = 0.9063 is a suspected misprint (README): there the smooth profile must only lie between
+// the tabulated neighbours v(0.9453) = -0.22847 and v(0.8594) = -0.44993.
+TEST(CavityGhia, Re400CentrelinesMatchGhia1982OnTheConvergedGrid) {
+  const auto shared = std::string(HS_SOURCE_DIR) + "/data/reference/";
+  const auto u_ref = hs::common::read_csv(shared + "ghia1982_cavity_u_vertical_centreline.csv");
+  const auto v_ref = hs::common::read_csv(shared + "ghia1982_cavity_v_horizontal_centreline.csv");
+  const auto y = u_ref.column("y");
+  const auto u_ghia = u_ref.column("u_Re400");
+  const auto x = v_ref.column("x");
+  const auto v_ghia = v_ref.column("v_Re400");
+  const Centrelines coarse = steady_re400(32, y, x);
+  const Centrelines fine = steady_re400(48, y, x);
+  const double k = 1.0 / (1.5 * 1.5 - 1.0);
+  auto check = [&](const char* name, const std::vector<double>& s, const std::vector<double>& ghia,
+                   const std::vector<double>& f32, const std::vector<double>& f48) {
+    const auto b32 = interpolation_bound(s, ghia, 1.0 / 32.0);
+    const auto b48 = interpolation_bound(s, ghia, 1.0 / 48.0);
+    double worst = 0.0;
+    for (std::size_t q = 0; q < s.size(); ++q) {
+      const double f_inf = f48[q] + k * (f48[q] - f32[q]);
+      if (name[0] == 'v' && std::abs(s[q] - 0.9063) < 1e-4) {
+        EXPECT_LT(f_inf, -0.22847) << "v at the misprinted x = 0.9063";
+        EXPECT_GT(f_inf, -0.44993) << "v at the misprinted x = 0.9063";
+        std::printf("cavity Re=400: v(0.9063) = %.4f (Ghia prints -0.23827)\n", f_inf);
+        continue;
+      }
+      const double band = 0.01 + (1.0 + k) * b48[q] + k * b32[q];
+      EXPECT_NEAR(f_inf, ghia[q], band) << name << " at " << s[q];
+      worst = std::max(worst, std::abs(f_inf - ghia[q]) / band);
+    }
+    std::printf("cavity Re=400, Richardson 32^2/48^2: max |%s - %s_Ghia| / band = %.2f\n", name, name, worst);
+  };
+  check("u", y, u_ghia, coarse.u, fine.u);
+  check("v", x, v_ghia, coarse.v, fine.v);
 }
 
 TEST(CavityGhia, Re100CentrelinesMatchGhia1982) { check_ghia_centrelines(hs::unresolved::PressureCoupling::piso); }
