@@ -60,7 +60,7 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
                             "\"ibm_reaction\" the membrane takes minus the IBM force: remove it");
   }
   if (reaction && c.drive_on_enclosed_volume && n.has("drive_on_enclosed_volume")) {
-    n.fail("drive_on_enclosed_volume", "= true would count the drive twice with membrane_force = \"ibm_reaction\" "
+    n.fail("drive_on_enclosed_volume", "would count the drive twice with membrane_force = \"ibm_reaction\" "
                                        "(the reaction already carries the drive on the fluid inside the cell): remove it");
   }
   if (reaction) c.drive_on_enclosed_volume = false;
