@@ -52,6 +52,18 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
                     : area == "sampled_surface" ? TractionArea::sampled_surface
                                                 : TractionArea::scaled_membrane;
   c.drive_on_enclosed_volume = n.boolean_or("drive_on_enclosed_volume", true);   // coupled_cell.hpp; off only to diagnose
+  // coupled_cell.hpp MembraneForce; docs/resolved-coupling.md "Momentum-consistent coupling".
+  const bool reaction = n.one_of_or("membrane_force", {"fluid_stress", "ibm_reaction"}, "fluid_stress") == "ibm_reaction";
+  c.membrane_force = reaction ? MembraneForce::ibm_reaction : MembraneForce::fluid_stress;
+  if (reaction && n.has("traction_area")) {
+    n.fail("traction_area", "applies only to membrane_force = \"fluid_stress\" (the sampled stress); with "
+                            "\"ibm_reaction\" the membrane takes minus the IBM force: remove it");
+  }
+  if (reaction && c.drive_on_enclosed_volume && n.has("drive_on_enclosed_volume")) {
+    n.fail("drive_on_enclosed_volume", "would count the drive twice with membrane_force = \"ibm_reaction\" "
+                                       "(the reaction already carries the drive on the fluid inside the cell): remove it");
+  }
+  if (reaction) c.drive_on_enclosed_volume = false;
   return c;
 }
 

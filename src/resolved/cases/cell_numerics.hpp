@@ -23,6 +23,7 @@ struct CellNumerics {
   IbmSettings ibm;
   TractionArea traction_area = TractionArea::scaled_membrane;   // which area the sampled fluid stress acts on
   bool drive_on_enclosed_volume = true;    // add the body-force drive's share the sampled tractions miss (CouplingSettings)
+  MembraneForce membrane_force = MembraneForce::fluid_stress;   // sampled stress, or minus the IBM force (coupled_cell.hpp)
   Streaming streaming = Streaming::two_buffer;   // lattice storage: two buffers, or the in-place AA pattern (same results)
   double dt_s = 0.0;                  // derived
 };

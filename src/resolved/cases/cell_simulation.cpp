@@ -71,7 +71,8 @@ void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const Membran
   s.membrane->translate_m(centroid_m - s.membrane->centroid_m());
   s.cell = std::make_unique<CoupledCell>(*s.lattice, *s.membrane, s.units,
                                          CouplingSettings{.ibm = n.ibm, .membrane_every = n.membrane_every,
-                                                          .median_filter = true, .traction_area = n.traction_area,
+                                                          .median_filter = true, .membrane_force = n.membrane_force,
+                                                          .traction_area = n.traction_area,
                                                           .lattice_origin_m = s.origin_m,
                                                           .drive_on_enclosed_volume = n.drive_on_enclosed_volume,
                                                           .add_forces_N = std::move(add_forces_N)});
@@ -136,6 +137,7 @@ void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samp
   cp.put("membrane", s.membrane->state());
   const CouplingState st = s.cell->state();
   cp.put("markers", flatten(st.marker_x_lu, st.marker_u_lu));
+  if (!st.reaction_lu.empty()) cp.put("reaction", flatten(st.reaction_lu, {}));   // ibm_reaction: impulse not yet given
   cp.put("series", samples);
   cp.meta()["step"] = step;
   cp.meta()["coupling_steps"] = st.steps;
@@ -167,6 +169,10 @@ long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const
     (k < n ? st.marker_x_lu : st.marker_u_lu).push_back({m[3 * k], m[3 * k + 1], m[3 * k + 2]});
   }
   st.steps = cp.meta()["coupling_steps"].get<long>();
+  if (cp.has("reaction")) {
+    const auto& r = cp.doubles("reaction");
+    for (std::size_t k = 0; k + 2 < r.size(); k += 3) st.reaction_lu.push_back({r[k], r[k + 1], r[k + 2]});
+  }
   s.cell->restore(st);
   const auto& series = cp.doubles("series");
   samples.assign(series.begin(), series.end());

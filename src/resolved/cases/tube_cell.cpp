@@ -37,7 +37,7 @@ CellNumerics numerics_of(const TubeCellConfig& c) {
   return {.dx_m = c.dx_m, .lattice_velocity = c.lattice_velocity, .max_tau = c.max_tau, .collision = c.collision,
           .wall = c.wall, .membrane_every = c.membrane_every, .membrane_mass_factor = c.membrane_mass_factor,
           .ibm = c.ibm, .traction_area = c.traction_area, .drive_on_enclosed_volume = c.drive_on_enclosed_volume,
-          .dt_s = c.dt_s};
+          .membrane_force = c.membrane_force, .dt_s = c.dt_s};
 }
 
 std::unique_ptr<TubeCellRun> build(const TubeCellConfig& c) {

@@ -35,6 +35,7 @@ void apply_numerics(const CellNumerics& n, TubeCellConfig& c) {
   c.ibm = n.ibm;
   c.traction_area = n.traction_area;
   c.drive_on_enclosed_volume = n.drive_on_enclosed_volume;
+  c.membrane_force = n.membrane_force;
   c.streaming = n.streaming;
   c.dt_s = n.dt_s;
 }

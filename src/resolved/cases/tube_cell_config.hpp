@@ -37,6 +37,7 @@ struct TubeCellConfig {
   IbmSettings ibm;
   TractionArea traction_area;       // which area the sampled fluid stress acts on
   bool drive_on_enclosed_volume = true;    // CellNumerics: the body-force share the sampled tractions miss
+  MembraneForce membrane_force = MembraneForce::fluid_stress;   // CellNumerics: stress sampling or the IBM reaction
   // [run]
   double max_time_s;                // cap on simulated time
   double max_jeffery_periods;       // or the cap in Jeffery periods at r* (0: not given), counted after the membrane

@@ -19,6 +19,8 @@ CoupledCell::CoupledCell(FluidLattice& lattice, NpfemSolver& membrane, const com
     throw std::invalid_argument("the membrane time step must be membrane_every * dt");
   }
   if (settings_.median_filter) ring_ = one_ring(membrane_.vertex_count(), membrane_.triangles());
+  // The reaction balances the impulses exactly; the npFEM step must then not create momentum of its own.
+  if (settings_.membrane_force == MembraneForce::ibm_reaction) membrane_.set_exact_translation(true);
   markers_.x_lu = membrane_positions_lu();
   markers_.u_lu.assign(markers_.x_lu.size(), {});
   const auto v = membrane_.velocities_m_s();
@@ -40,11 +42,7 @@ std::vector<common::Vec3> CoupledCell::marker_positions_m() const {
   return x;
 }
 
-void CoupledCell::membrane_solve() {
-  const auto areas_m2 = membrane_.vertex_areas_m2();
-  const double dx2 = units_.dx_m() * units_.dx_m();
-  for (std::size_t k = 0; k < areas_m2.size(); ++k) markers_.area_lu[k] = areas_m2[k] / dx2;
-  if (!interval_starts()) return;
+std::vector<common::Vec3> CoupledCell::stress_force_N() {
   const auto normals = membrane_.vertex_normals();
   const TractionResult t = fluid_traction(ibm_, lattice_, {markers_.x_lu, normals, markers_.area_lu, membrane_.triangles()},
                                         ring_, settings_.traction_area);
@@ -60,6 +58,34 @@ void CoupledCell::membrane_solve() {
   }
   report_.vertices_without_fluid = t.vertices_without_fluid;
   report_.sample_distance_lu = t.mean_sample_distance_lu;
+  return f_N;
+}
+
+/// The fluid received sum_n F_k^n dt (SI impulse) from marker k over the lattice steps n of the last interval; the
+/// npFEM step applies its external force over h = k dt, so f_k = -sum_n F_k^n / k gives the membrane exactly minus
+/// that impulse. The first interval (nothing spread yet) and a shorter one after a restart are covered too: the
+/// division is by k, not by the number of steps summed, so the impulses always balance.
+std::vector<common::Vec3> CoupledCell::reaction_force_N() {
+  std::vector<common::Vec3> f_N(markers_.x_lu.size());
+  report_.fluid_force_N = {};
+  const double per_step = -1.0 / static_cast<double>(settings_.membrane_every);
+  for (std::size_t k = 0; k < f_N.size() && k < reaction_lu_.size(); ++k) {
+    for (int a = 0; a < 3; ++a) f_N[k][a] = units_.to_si_force(per_step * reaction_lu_[k][a]);
+    report_.fluid_force_N += f_N[k];
+  }
+  reaction_lu_.assign(markers_.x_lu.size(), {});
+  report_.vertices_without_fluid = 0;
+  report_.sample_distance_lu = 0.0;
+  return f_N;
+}
+
+void CoupledCell::membrane_solve() {
+  const auto areas_m2 = membrane_.vertex_areas_m2();
+  const double dx2 = units_.dx_m() * units_.dx_m();
+  for (std::size_t k = 0; k < areas_m2.size(); ++k) markers_.area_lu[k] = areas_m2[k] / dx2;
+  if (!interval_starts()) return;
+  std::vector<common::Vec3> f_N =
+      settings_.membrane_force == MembraneForce::ibm_reaction ? reaction_force_N() : stress_force_N();
   if (settings_.add_forces_N) settings_.add_forces_N(membrane_.positions_m(), f_N);
   membrane_.set_external_forces_N(f_N);
   membrane_.step();
@@ -70,7 +96,13 @@ void CoupledCell::membrane_solve() {
   }
 }
 
-void CoupledCell::ibm_forcing() { report_.forcing = ibm_.apply(markers_); }
+void CoupledCell::ibm_forcing() {
+  report_.forcing = ibm_.apply(markers_);
+  if (settings_.membrane_force != MembraneForce::ibm_reaction) return;
+  const auto& f = report_.forcing.marker_force_lu;
+  if (reaction_lu_.size() != f.size()) reaction_lu_.assign(f.size(), {});
+  for (std::size_t k = 0; k < f.size(); ++k) reaction_lu_[k] += f[k];
+}
 
 void CoupledCell::lbm_step() { lattice_.step(); }
 
@@ -99,9 +131,13 @@ void CoupledCell::restore(const CouplingState& state) {
   if (state.marker_x_lu.size() != markers_.x_lu.size() || state.marker_u_lu.size() != markers_.u_lu.size()) {
     throw std::invalid_argument("coupling checkpoint: marker count differs");
   }
+  if (!state.reaction_lu.empty() && state.reaction_lu.size() != markers_.x_lu.size()) {
+    throw std::invalid_argument("coupling checkpoint: reaction count differs");
+  }
   markers_.x_lu = state.marker_x_lu;
   markers_.u_lu = state.marker_u_lu;
   steps_ = state.steps;
+  reaction_lu_ = state.reaction_lu;   // empty (fluid_stress, or an older checkpoint): nothing pending
 }
 
 }  // namespace hs::resolved

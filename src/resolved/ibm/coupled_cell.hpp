@@ -14,15 +14,25 @@
 
 namespace hs::resolved {
 
+/// What the membrane receives from the fluid (docs/resolved-coupling.md, "Momentum-consistent coupling").
+///  fluid_stress: the fluid stress sampled outside the membrane (fluid_traction, Palabos-npFEM). The IBM force on the
+///    fluid and this force are not equal and opposite: fluid + membrane momentum is not conserved.
+///  ibm_reaction: minus the force every marker spread onto the fluid over the lattice steps of the previous membrane
+///    interval (all direct-forcing iterations), averaged over the interval (Peskin 2002; Kruger 2011): the impulse the
+///    membrane gets over its step h = k dt equals minus the impulse the fluid got, so the total is conserved.
+enum class MembraneForce { fluid_stress, ibm_reaction };
+
 struct CouplingSettings {
   IbmSettings ibm;
   int membrane_every = 2;          // lattice steps per membrane step, h = k dt (Palabos timestep_ShapeOp = 2)
-  bool median_filter = true;       // Palabos-npFEM FILTERING is on (resolved-methods.md 1.4 step 6)
+  bool median_filter = true;       // Palabos-npFEM FILTERING is on (resolved-methods.md 1.4 step 6); fluid_stress only
+  MembraneForce membrane_force = MembraneForce::fluid_stress;
   TractionArea traction_area = TractionArea::scaled_membrane;   // see fluid_traction.hpp
   common::Vec3 lattice_origin_m;   // SI position of global lattice node (0, 0, 0)
   /// Add the body-force drive on the volume the sampling surface encloses (cell + shell out to the sample nodes) to
   /// the membrane's force. The tractions are read 1-3 lu outside the membrane, so they miss that share of a body-force
   /// drive, and a free cell lagged (docs/resolved-coupling.md, "Open issues" 1). Off by default until re-measured.
+  /// Ignored with MembraneForce::ibm_reaction: the reaction already carries the drive on the fluid inside the cell.
   bool drive_on_enclosed_volume = false;
   /// Optional forces added to the fluid traction before each membrane step, e.g. a membrane-wall repulsion:
   /// (vertex positions in SI, unwrapped; the external forces in newtons, to add to). Empty: none.
@@ -43,11 +53,15 @@ struct CouplingState {
   std::vector<common::Vec3> marker_x_lu;
   std::vector<common::Vec3> marker_u_lu;
   long steps = 0;
+  /// ibm_reaction: the per-marker force spread onto the fluid since the last membrane step (lattice units, summed
+  /// over lattice steps and iterations): impulse the fluid has received and the membrane not yet. Empty: none.
+  std::vector<common::Vec3> reaction_lu;
 };
 
 /// Runs the coupled step as named stages (STYLE R8), every lattice step:
 ///  1. membrane_solve (every k-th step): external force from the fluid stress at time t (fluid_traction,
-///     converted to newtons), one npFEM step of length h = k dt; markers are not moved yet.
+///     converted to newtons) or, with ibm_reaction, minus the IBM force of the k lattice steps before, divided by k;
+///     one npFEM step of length h = k dt; markers are not moved yet.
 ///  2. ibm_forcing: multi-direct forcing with the markers' (X, U) at time t.
 ///  3. lbm_step: collide, stream, halos, boundaries.
 ///  4. markers_advect: after a membrane step the markers take the new npFEM velocity; X += U every step, and at
@@ -70,11 +84,14 @@ class CoupledCell {
   [[nodiscard]] long steps() const { return steps_; }
   /// Marker positions in SI (unwrapped).
   [[nodiscard]] std::vector<common::Vec3> marker_positions_m() const;
-  [[nodiscard]] CouplingState state() const { return {markers_.x_lu, markers_.u_lu, steps_}; }
+  [[nodiscard]] CouplingState state() const { return {markers_.x_lu, markers_.u_lu, steps_, reaction_lu_}; }
   void restore(const CouplingState& state);
 
  private:
   [[nodiscard]] std::vector<common::Vec3> membrane_positions_lu() const;
+  /// The membrane's force this step, newtons per vertex: the sampled fluid stress, or minus the IBM force.
+  [[nodiscard]] std::vector<common::Vec3> stress_force_N();
+  [[nodiscard]] std::vector<common::Vec3> reaction_force_N();
   [[nodiscard]] bool interval_starts() const { return steps_ % settings_.membrane_every == 0; }
 
   FluidLattice& lattice_;
@@ -85,6 +102,7 @@ class CoupledCell {
   std::vector<std::vector<int>> ring_;
   Markers markers_;
   std::vector<common::Vec3> next_u_lu_;   // npFEM velocity of the current interval, copied after the LB step
+  std::vector<common::Vec3> reaction_lu_; // ibm_reaction: IBM force per marker summed since the last membrane step
   CouplingReport report_;
   long steps_ = 0;
 };

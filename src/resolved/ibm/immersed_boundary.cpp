@@ -148,7 +148,8 @@ struct StencilEntry {
 
 std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const FluidLattice& lattice,
                                          std::span<const common::Vec3> x_lu, std::vector<std::size_t>& first,
-                                         std::vector<std::int32_t>& node_slot, std::vector<std::size_t>& touched) {
+                                         std::vector<std::int32_t>& node_slot, std::vector<std::size_t>& touched,
+                                         std::vector<double>& scale) {
   const std::size_t n = x_lu.size();
   std::vector<StencilEntry> entries;
   first.assign(n + 1, 0);
@@ -184,7 +185,7 @@ std::vector<StencilEntry> gather_stencils(const ImmersedBoundary& ibm, const Flu
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t e = first[k]; e < first[k + 1]; ++e) fluid_weight[k] += entries[e].fluid ? entries[e].weight : 0.0;
   }
-  const std::vector<double> scale = cut_stencil_scale_from(fluid_weight, lattice.decomposition().comm());
+  scale = cut_stencil_scale_from(fluid_weight, lattice.decomposition().comm());
   for (std::size_t k = 0; k < n; ++k) {
     if (scale[k] == 1.0) continue;
     for (std::size_t e = first[k]; e < first[k + 1]; ++e) entries[e].weight = entries[e].fluid ? entries[e].weight * scale[k] : 0.0;
@@ -207,7 +208,9 @@ ForcingReport ImmersedBoundary::apply(const Markers& markers) {
   // The populations do not change during the iterations, only the force field: rho and j0 = sum f c + F_body/2 are
   // read once, and the half-force momentum of a node is j0 + F_ibm/2 (the same numbers moments() would give).
   std::vector<std::size_t> first;
-  const std::vector<StencilEntry> entries = gather_stencils(*this, lattice_, markers.x_lu, first, node_slot_, forced_nodes_);
+  std::vector<double> scale;   // per marker, global: 0 when no rank holds a fluid node of its stencil
+  const std::vector<StencilEntry> entries =
+      gather_stencils(*this, lattice_, markers.x_lu, first, node_slot_, forced_nodes_, scale);
   forced_nodes_known_ = true;   // every node this apply() writes is in forced_nodes_ (wall nodes there get nothing)
   const auto& layout = lattice_.layout();
   const std::span<double> field = lattice_.force_field();
@@ -226,6 +229,7 @@ ForcingReport ImmersedBoundary::apply(const Markers& markers) {
     return reduce_marker_sums(sums, lattice_.decomposition().comm());
   };
   ForcingReport report;
+  report.marker_force_lu.assign(n, {});
   MarkerFluid fluid = interpolate_cached();
   report.slip_before_lu = max_slip(markers, fluid);
   for (int it = 0; it < settings_.iterations; ++it) {
@@ -233,6 +237,7 @@ ForcingReport ImmersedBoundary::apply(const Markers& markers) {
       // Guo forcing: the half-force velocity moves by F/(2 rho), hence the factor 2 (Kang & Hassan 2011).
       const common::Vec3 df = 2.0 * markers.area_lu[k] * fluid.rho_lu[k] * (markers.u_lu[k] - fluid.u_lu[k]);
       report.total_force_lu += df;
+      if (scale[k] > 0.0) report.marker_force_lu[k] += df;
       for (std::size_t e = first[k]; e < first[k + 1]; ++e) {
         const StencilEntry& s = entries[e];
         if (!s.fluid) continue;

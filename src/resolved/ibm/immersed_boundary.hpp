@@ -38,6 +38,10 @@ struct ForcingReport {
   double slip_before_lu = 0.0;          // max |U_k - u_k| before the first iteration
   double slip_after_lu = 0.0;           // max |U_k - u_k| after the last iteration (only with measure_slip)
   common::Vec3 total_force_lu;          // sum of the marker forces spread (= force on the fluid per step)
+  /// Per marker: the force it spread onto the fluid this step, summed over the iterations (0 for a marker without
+  /// any fluid node in reach, whose correction goes nowhere). Sums to total_force_lu up to those markers; minus it is
+  /// the reaction on the membrane (CouplingSettings::membrane_force).
+  std::vector<common::Vec3> marker_force_lu;
 };
 
 /// Immersed boundary operations on one FluidLattice. Every marker is known on every rank; each rank touches only

@@ -165,6 +165,10 @@ NpfemStepReport NpfemSolver::step() {
   const double fx = start(xn, y, x, g);
   const NpfemStepReport report =
       settings_.iteration == NpfemIteration::lbfgs ? minimise(x, y, g, fx) : projective_dynamics(x, y, g, fx);
+  // g is quadratic along the three rigid translations (E and the damping Laplacian do not see them, 1^T M~ = m 1^T)
+  // with its minimum at mean(x) = mean(y); a minimisation that starts from x_n and stops early (cap, short line
+  // search) leaves part of that. Removing it makes sum_i m v_i change by exactly h sum_i f_i.
+  if (exact_translation_) x.rowwise() += y.colwise().mean() - x.colwise().mean();
   w.correction[1].swap(w.correction[0]);
   w.correction[0].noalias() = x - y;
   w.corrections = std::min(w.corrections + 1, 2);
@@ -282,6 +286,10 @@ double NpfemSolver::volume_m3() const {
 double NpfemSolver::rest_area_m2() const { return energy_->rest_area() * 1e-12; }
 double NpfemSolver::rest_volume_m3() const { return energy_->rest_volume() * 1e-18; }
 double NpfemSolver::vertex_mass_kg() const { return mass_fg_ * 1e-18; }
+double NpfemSolver::elastic_energy_J() const {
+  Positions gradient;
+  return energy_->evaluate(Positions(x_um_.rowwise() - x_um_.colwise().mean()), gradient) / pN_um_per_J;
+}
 
 }  // namespace hs::resolved
 

@@ -70,6 +70,10 @@ class NpfemSolver {
 
   /// Holds the centre of mass where it is now (fixed), or lets it move only along `axis` (axis).
   void set_center_constraint(CenterConstraint constraint, hs::common::Vec3 axis = {1.0, 0.0, 0.0});
+  /// Minimise the step exactly along the rigid translations (a uniform shift of the minimiser, free: g is quadratic
+  /// there), so that the step conserves momentum to round-off whatever the iteration did: sum m v changes by h sum f.
+  /// Off by default (bit-for-bit with earlier runs); the ibm_reaction coupling turns it on (coupled_cell.hpp).
+  void set_exact_translation(bool on) { exact_translation_ = on; }
   /// Moves the whole cell rigidly (placing it in a domain).
   void translate_m(const hs::common::Vec3& shift_m);
 
@@ -93,6 +97,8 @@ class NpfemSolver {
   [[nodiscard]] double rest_area_m2() const;
   [[nodiscard]] double rest_volume_m3() const;
   [[nodiscard]] double vertex_mass_kg() const;
+  /// The membrane's elastic energy E(x) at the current positions, joules (power balances; one energy evaluation).
+  [[nodiscard]] double elastic_energy_J() const;
   [[nodiscard]] double time_step_s() const { return h_us_ * 1e-6; }
   /// The per-step relaxation C_alpha this step and vertex mass give the deformation friction (0 = elastic).
   [[nodiscard]] double velocity_relaxation() const { return velocity_relaxation_; }
@@ -139,6 +145,7 @@ class NpfemSolver {
   Positions v_um_us_;
   Positions f_ext_pN_;
   CenterConstraint center_constraint_ = CenterConstraint::free;
+  bool exact_translation_ = false;
   Eigen::Vector3d center_target_um_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d center_axis_ = Eigen::Vector3d::UnitX();
   NpfemStatistics stats_;

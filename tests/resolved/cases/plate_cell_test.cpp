@@ -54,6 +54,39 @@ TEST(PlateCellConfig, ShearRateAndCapillaryTogetherAreRefused) {
   EXPECT_THROW(read(toml, PlateFlow::shear), common::ConfigError);
 }
 
+TEST(PlateCellConfig, MembraneForceDefaultsToTheSampledStress) {
+  const PlateCellConfig c = read(shipped("shear/tank-treading"), PlateFlow::shear);
+  EXPECT_EQ(c.numerics.membrane_force, MembraneForce::fluid_stress);
+  EXPECT_TRUE(c.numerics.drive_on_enclosed_volume);
+}
+
+TEST(PlateCellConfig, MembraneForceIbmReactionIsReadAndDropsTheDriveShare) {
+  const std::string toml = with(shipped("shear/tank-treading"), "ibm_iterations = 5",
+                                "ibm_iterations = 5\nmembrane_force = \"ibm_reaction\"");
+  const PlateCellConfig c = read(toml, PlateFlow::shear);
+  EXPECT_EQ(c.numerics.membrane_force, MembraneForce::ibm_reaction);
+  EXPECT_FALSE(c.numerics.drive_on_enclosed_volume);   // the reaction carries the drive on the cell's interior
+}
+
+TEST(PlateCellConfig, MembraneForceBadValueOrStressKeysAreRefusedByName) {
+  const std::string base = shipped("shear/tank-treading");
+  for (const std::string& extra : {std::string("membrane_force = \"reaction\""),
+                                   std::string("membrane_force = \"ibm_reaction\"\ntraction_area = \"membrane\""),
+                                   std::string("membrane_force = \"ibm_reaction\"\ndrive_on_enclosed_volume = true")}) {
+    const std::string toml = with(base, "ibm_iterations = 5", "ibm_iterations = 5\n" + extra);
+    try {
+      (void)read(toml, PlateFlow::shear);
+      ADD_FAILURE() << "accepted: " << extra;
+    } catch (const common::ConfigError& e) {
+      const std::string what = e.what();
+      const std::string key = extra.find("traction_area") != std::string::npos ? "traction_area"
+                              : extra.find("drive_on") != std::string::npos   ? "drive_on_enclosed_volume"
+                                                                              : "membrane_force";
+      EXPECT_NE(what.find(key), std::string::npos) << what;
+    }
+  }
+}
+
 TEST(PlateCellConfig, MigrationReynoldsFixesUmaxAndTheSpinUp) {
   const PlateCellConfig c = read(shipped("migration"), PlateFlow::poiseuille);
   const double u_max = 0.1 * 1e-6 / 24e-6;   // Re = rho H U_max / mu
