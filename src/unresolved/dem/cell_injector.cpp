@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <tuple>
 
 #include <fmt/format.h>
@@ -48,6 +49,24 @@ CellInjector::CellInjector(const InjectionSpec& spec, const hs::common::Shape& s
   const double r = spec.cell_radius_m;
   cell_volume_m3_ = 4.0 / 3.0 * std::numbers::pi * r * r * r;
   std::tie(t1_, t2_) = hs::common::tangent_basis(o.normal);
+}
+
+std::string CellInjector::rng_state() const {
+  std::ostringstream out;
+  out << rng_;
+  return out.str();
+}
+
+void CellInjector::restore(double debt_m3, const std::string& rng_state) {
+  std::istringstream in(rng_state);
+  std::mt19937_64 rng;
+  in >> rng;
+  if (in.fail() || !(debt_m3 >= 0.0)) {
+    throw hs::common::ConfigError(fmt::format("opening '{}': the checkpoint's injection state is unreadable", spec_.inlet.name));
+  }
+  rng_ = rng;
+  debt_m3_ = debt_m3;
+  u01_.reset();
 }
 
 Vec3 CellInjector::minimum_image(Vec3 d) const {

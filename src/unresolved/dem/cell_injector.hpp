@@ -62,6 +62,10 @@ class CellInjector {
   [[nodiscard]] double debt_m3() const { return debt_m3_; }
   [[nodiscard]] double debt_cells() const { return debt_m3_ / cell_volume_m3_; }
 
+  /// Restart: the random stream as text (std::mt19937_64's own format) and the debt; restore() continues them.
+  [[nodiscard]] std::string rng_state() const;
+  void restore(double debt_m3, const std::string& rng_state);
+
  private:
   struct Near {
     std::vector<hs::common::Vec3> x;

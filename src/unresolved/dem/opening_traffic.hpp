@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/geometry/opening.hpp"
+#include "common/io/checkpoint.hpp"
 #include "unresolved/dem/cell_injector.hpp"
 #include "unresolved/dem/dem_system.hpp"
 #include "unresolved/dem/particle_params.hpp"
@@ -60,6 +61,11 @@ class OpeningTraffic {
   [[nodiscard]] std::int64_t cells_removed() const;
   /// The injector of opening `index` (null for an outlet), e.g. for its debt.
   [[nodiscard]] const CellInjector* injector(std::size_t index) const;
+
+  /// Restart (opening_traffic_checkpoint.cpp): counters, each inlet's debt and random stream and the next id, under
+  /// names starting with `prefix`. read_state() throws ConfigError when the checkpoint has other openings.
+  void write_state(hs::common::Checkpoint& cp, const std::string& prefix) const;
+  void read_state(const hs::common::Checkpoint& cp, const std::string& prefix);
 
  private:
   /// Flags the owned particles leaving, counts them; returns the flags (empty when none leaves).

@@ -2,9 +2,11 @@
 // Injection and removal at openings (unit tier): no overlaps, reproducible, bad inputs named.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <set>
 
 #include "common/errors.hpp"
+#include "common/io/checkpoint.hpp"
 #include "open_tube_traffic.hpp"
 
 namespace hs::unresolved {
@@ -95,6 +97,49 @@ TEST(OpeningTraffic, RemovesAtTheOutletAndCountsBackflowAtTheInlet) {
   EXPECT_EQ(traffic.cells_injected(), 0);          // no flow, no debt
   EXPECT_EQ(traffic.injector(0)->debt_m3(), 0.0);
   EXPECT_EQ(traffic.injector(1), nullptr);
+}
+
+TEST(OpeningTraffic, ResumedFromACheckpointItInjectsTheSameCells) {
+  const OpenTube tube;
+  const VelocityField u = test::poiseuille(mean_velocity_m_s, tube.radius_m);
+  const double q = mean_velocity_m_s * tube.area_m2();
+  const double dt = 0.1 * default_particle_params().diameter_m / (2.0 * mean_velocity_m_s);
+  auto advance = [&](OpeningTraffic& t, ParticleStore& p, int steps) {
+    for (int n = 0; n < steps; ++n) {
+      test::advect(p, u, dt);
+      t.exchange(p, dt, {.flow_rate_m3_s = {q, 0.0}, .velocity_m_s = u});
+    }
+  };
+  OpeningTraffic whole(tube.spec(0.3, 11), tube.shape, tube.domain);
+  ParticleStore p_whole;
+  advance(whole, p_whole, 150);
+  hs::common::Checkpoint cp;
+  whole.write_state(cp, "traffic.");
+  const ParticleStore p_saved = p_whole;   // the DEM checkpoint's part, here a copy
+  const auto dir = std::filesystem::temp_directory_path() / "hs_opening_traffic_restart";
+  cp.write(dir);
+  advance(whole, p_whole, 150);
+
+  OpeningTraffic resumed(tube.spec(0.3, 11), tube.shape, tube.domain);
+  resumed.read_state(hs::common::Checkpoint::read(dir), "traffic.");
+  std::filesystem::remove_all(dir);
+  ParticleStore p_resumed = p_saved;
+  advance(resumed, p_resumed, 150);
+
+  ASSERT_EQ(p_whole.n_owned(), p_resumed.n_owned());
+  EXPECT_EQ(p_whole.id(), p_resumed.id());
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(p_whole.position_m()[a], p_resumed.position_m()[a]);   // bit for bit
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(whole.counters()[k].cells_in, resumed.counters()[k].cells_in);
+    EXPECT_EQ(whole.counters()[k].cells_out, resumed.counters()[k].cells_out);
+  }
+  EXPECT_EQ(whole.injector(0)->debt_m3(), resumed.injector(0)->debt_m3());
+
+  hs::common::Checkpoint other;
+  OpeningTrafficSpec renamed = tube.spec(0.3, 11);
+  renamed.openings[1].name = "exit";
+  OpeningTraffic(renamed, tube.shape, tube.domain).write_state(other, "traffic.");
+  EXPECT_THROW(resumed.read_state(other, "traffic."), hs::common::ConfigError);
 }
 
 TEST(OpeningTraffic, BadInputsAreConfigErrorsNamingTheKey) {
