@@ -46,9 +46,10 @@ struct OpenTubeRun {
 /// Runs to steady state: dt = 2e-4 s is 2.4 viscous times R^2/nu (implicit Euler damps the slowest radial mode
 /// ~15x per step) and Courant 0.2 on the axis; at Re = 0.017 the flow is quasi-steady Stokes flow, so 40 steps
 /// converge it as they do the periodic tube (tube_poiseuille_test; here the pressure solve needs 2-4 iterations
-/// per step at the end). Four PISO correctors, not the default two: with two, this open tube (viscous number
-/// nu dt / dx^2 = 60) grows an odd-even oscillation in time mid-tube (x1.2 every two steps) and trips the Courant
-/// limit at step 14; with four (or dt = 1e-5 s with two, or the projection) it settles. Measured, not yet explained.
+/// per step at the end). Four PISO correctors, not the default two: at the viscous number nu dt / dx^2 = 60 two
+/// correctors let the known PISO mode grow (docs/cfd-dem.md, "blown up at 60"): here an odd-even oscillation in
+/// time mid-tube, x1.2 every two steps, past the Courant limit at step 14. Four correctors settle it (measured; so
+/// do dt = 1e-5 s with two, and the projection, which is 8.6% off the profile after 40 steps: slower to converge).
 OpenTubeRun run(const std::function<Vec3(const Vec3&)>& inlet, double profile_x_m) {
   const double h = 2.0 * kRadius / kCells;
   const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {kLength, 0, 0}, .radius_m = kRadius});
