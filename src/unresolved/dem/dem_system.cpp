@@ -47,6 +47,33 @@ std::size_t DemSystem::add_particle(const hs::common::Vec3& position_m, const hs
                          .id = id.value_or(static_cast<std::int64_t>(particles_.n_owned()))});
 }
 
+void DemSystem::begin_edit() {
+  // The list indexes the particles as they are now: take the springs before the first edit changes them. Later
+  // edits before the next step, or edits after particles_changed(), have no valid list to take them from.
+  if (initialized_) {
+    pending_history_ = list_.extract_history(particles_);
+    restoring_ = true;   // initialize() keeps the forces in particles() instead of evaluating them again
+  }
+  initialized_ = false;
+}
+
+std::size_t DemSystem::insert_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s,
+                                       std::int64_t id) {
+  begin_edit();
+  const ParticleParams& p = settings_.params;
+  return particles_.add({.position_m = position_m,
+                         .velocity_m_s = velocity_m_s,
+                         .angular_velocity_rad_s = {},
+                         .radius_m = p.radius_m(),
+                         .mass_kg = p.mass_kg(),
+                         .id = id});
+}
+
+std::size_t DemSystem::remove_particles(const std::vector<bool>& remove) {
+  begin_edit();
+  return particles_.remove_owned(remove);
+}
+
 void DemSystem::initialize() {
   if (walls_ != nullptr) {
     const auto& pos = particles_.position_m();
@@ -61,7 +88,9 @@ void DemSystem::initialize() {
     }
   }
   particles_.clear_ghosts();
-  list_ = NeighborList(settings_.params.skin_m);
+  // A fresh list forgets the springs, except on a restart or after an edit (they are in pending_history_). The
+  // same list object keeps its build count growing, which PairContacts uses to know its plan is stale.
+  if (!restoring_) list_ = NeighborList(settings_.params.skin_m);
   rebuild();
   if (!restoring_) compute_forces();   // a restart keeps the checkpointed forces (their springs are already updated)
   restoring_ = false;

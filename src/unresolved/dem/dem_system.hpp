@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "common/geometry/shape.hpp"
 #include "unresolved/dem/domain.hpp"
@@ -54,6 +55,13 @@ class DemSystem {
   /// Adds an owned particle of the configured size and density (id = running count unless given).
   std::size_t add_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s = {},
                            std::optional<std::int64_t> id = std::nullopt);
+  /// Between steps, unlike add_particle(): keeps the contact springs and the forces of the particles present, so
+  /// the run goes on as if the new particle had always been there. pre: it touches no particle and no wall (its
+  /// contact force is zero; a force hook acts on it from the next step on). Returns its index until the next step.
+  std::size_t insert_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s, std::int64_t id);
+  /// Between steps: removes the owned particles with remove[i] true (ParticleStore::remove_owned); the others
+  /// keep their contact springs and forces (a force from a removed partner acts for the next half kick only).
+  std::size_t remove_particles(const std::vector<bool>& remove);
   /// Call after changing particles() structurally (added/removed particles, moved positions by hand).
   void particles_changed() { initialized_ = false; }
   /// Called in every force evaluation after contacts, before the second half kick: may add to force_N() and
@@ -66,7 +74,11 @@ class DemSystem {
   /// One DEM step of time_step_s().
   void step();
   /// Contact springs of the current list (for checkpoints), keyed by particle ids.
-  [[nodiscard]] ContactHistory contact_history() const { return list_.extract_history(particles_); }
+  /// Before the first step, or between an edit (or a restart) and the next step, the springs waiting to be restored.
+  [[nodiscard]] ContactHistory contact_history() const {
+    if (!initialized_) return restoring_ ? pending_history_ : ContactHistory{};
+    return list_.extract_history(particles_);
+  }
   /// Restart: the next initialize() uses these springs and keeps the forces now in particles() (read from a
   /// checkpoint) instead of evaluating them, so the run continues as if never stopped (up to round-off).
   void restore_contact_history(ContactHistory history);
@@ -76,6 +88,7 @@ class DemSystem {
   [[nodiscard]] double max_speed_m_s() const;
 
  private:
+  void begin_edit();
   void rebuild();
   void compute_forces();
 

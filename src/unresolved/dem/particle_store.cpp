@@ -61,6 +61,25 @@ void ParticleStore::permute_owned(const std::vector<std::size_t>& order) {
   id_.swap(ids);
 }
 
+std::size_t ParticleStore::remove_owned(const std::vector<bool>& remove) {
+  if (remove.size() != n_owned_) throw std::logic_error("remove_owned: one flag per owned particle expected");
+  clear_ghosts();
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n_owned_; ++i) {
+    if (!remove[i]) id_[kept++] = id_[i];
+  }
+  for_each_column([&](Column& c) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n_owned_; ++i) {
+      if (!remove[i]) c[k++] = c[i];
+    }
+  });
+  const std::size_t removed = n_owned_ - kept;
+  n_owned_ = kept;
+  resize(kept);
+  return removed;
+}
+
 void ParticleStore::clear_ghosts() {
   resize(n_owned_);
   ghost_owner_.clear();

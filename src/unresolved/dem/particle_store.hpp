@@ -86,6 +86,9 @@ class ParticleStore {
   const Column& deformation_index() const { return di_; }
   const Vec3Columns& wall_shear_m() const { return wall_shear_; }
 
+  /// Removes the owned particles i with remove[i] true (remove.size() == n_owned()); the others keep their order,
+  /// ids and every column (forces, coupling data, wall history). Removes all ghosts first. Returns how many went.
+  std::size_t remove_owned(const std::vector<bool>& remove);
   /// Reorders the owned particles: new particle k is old particle order[k]. Requires no ghosts.
   void permute_owned(const std::vector<std::size_t>& order);
 
