@@ -167,16 +167,32 @@ TEST(MembraneEnergy, SimpleShearOfAFlatPatchIsSkalak1973) {
   std::printf("simple shear gamma = %.1f: E / (A W_Skalak) - 1 = %.2e\n", gamma, ratio - 1.0);
 }
 
-TEST(MembraneEnergy, BendingOfASphereIsHelfrichWithinTwoPercent) {
+namespace {
+
+/// E_b / (8 pi k_c) - 1 for a sphere of radius 2 um at rest as 1 um, on the icosphere of `vertices`.
+double helfrich_sphere_excess(int vertices) {
   // Rest sphere R = 1 um, current sphere R = 2 um: |K x| doubles on every hinge, so E_b = (k_c/2) sum w |K x_rest|^2,
-  // which the Helfrich energy (k_c/2) integral (2H)^2 dA = 8 pi k_c should match for a fine icosphere.
-  const TriangleMesh s = make_sphere_mesh(642);
+  // which the Helfrich energy (k_c/2) integral (2H)^2 dA = 8 pi k_c should match as the mesh is refined.
+  const TriangleMesh s = make_sphere_mesh(vertices);
   const Positions rest = to_um(s) * 1e-6;   // make_sphere_mesh is the unit sphere; read as 1 um
   const double kc = 0.2;
   MembraneEnergy e(rest, s.triangles, {.skalak_lambda_pN_um = 0.0, .hardening_mu_pN_um = 0.0, .area_weight_pN_um = 0.0,
                                        .bending_pN_um = kc, .volume_modulus_pN_um2 = 0.0, .global_area_pN_um = 0.0});
   Positions g;
-  const double energy = e.evaluate(rest * 2.0, g);
-  // 2%: the cotangent hinge sum converges to integral (2H)^2 dA; we measured 1.5% excess at 642 vertices.
-  EXPECT_NEAR(energy / (8.0 * std::numbers::pi * kc), 1.0, 0.02);
+  return e.evaluate(rest * 2.0, g) / (8.0 * std::numbers::pi * kc) - 1.0;
+}
+
+}  // namespace
+
+TEST(MembraneEnergy, BendingOfASphereIsMeshIndependentAndNearHelfrich) {
+  // Measured this way (session 13): the excess over Helfrich's 8 pi k_c does NOT fall with refinement: +1.62% (162),
+  // +1.50% (642), +1.51% (2562). It is a constant offset of the discrete hinge energy (likely its area weights), not a
+  // discretisation error: the bending modulus acts ~1.5% high at every resolution. Asserted: the offset is converged
+  // (642 vs 2562 within 0.2 points, so the 258/642-vertex cells see the same k_c) and stays under 2% of Helfrich, the
+  // measured bending moduli of RBC membranes spreading far wider than that (a factor of ~2 between methods).
+  const double e642 = helfrich_sphere_excess(642);
+  const double e2562 = helfrich_sphere_excess(2562);
+  std::printf("Helfrich sphere: E / 8 pi k_c - 1 = %.3e (642), %.3e (2562)\n", e642, e2562);
+  EXPECT_LT(std::abs(e2562 - e642), 0.002);
+  EXPECT_LT(std::abs(e2562), 0.02);
 }
