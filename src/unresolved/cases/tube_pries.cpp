@@ -16,6 +16,7 @@
 #include "common/geometry/tube.hpp"
 #include "common/io/checkpoint.hpp"
 #include "common/stop_request.hpp"
+#include "unresolved/cases/cfd_dem_frames.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
@@ -136,6 +137,7 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
                                             "{:.4g} s; use n_coupling >= {}", dt_dem, limit, static_cast<long>(std::ceil(c.dt_s / limit))));
   }
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
+  c.vtk_every_s = root.section_or_empty("output").positive_or("vtk_every_s", 0.0);   // 0 (absent): final frame only
   if (c.wall_correction != hs::closures::WallCorrection::none) {
     try {
       (void)hs::closures::wall_correction_factor(c.wall_correction, c.particles.diameter_m, c.diameter_m);
@@ -263,7 +265,7 @@ SeriesAverages average_series(const std::vector<TubePriesSample>& series, double
 }  // namespace
 
 TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::function<void(const TubePriesSample&)>& observe,
-                                    const TubePriesRestart& restart) {
+                                    const TubePriesRestart& restart, CfdDemFrames* frames) {
   const Tube3 tube(c);
   const double r_tube = 0.5 * c.diameter_m;
   const Domain dem_domain{.box = {{-r_tube, -r_tube, 0.0}, {r_tube, r_tube, c.length_m}}, .periodic = {false, false, true}};
@@ -299,6 +301,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
     const double q_blood = fluid.flow_rate_m3_s(2) + q_rbc;
     st.series.push_back({fluid.time_s(), q_blood, q_rbc, q_rbc / q_blood, static_cast<double>(fluid.last_stats().pressure_iterations)});
     observe(st.series.back());
+    if (frames != nullptr) frames->after_step(fluid, dem, coupling.steps(), coupling.steps() == steps);
     if (const int signal = hs::common::stop_signal()) {
       if (!restart.dir.empty()) write_tube_checkpoint(coupling, st, restart);
       throw hs::common::RunInterrupted(fmt::format("stopped by signal {} at step {} of {}{}", signal, coupling.steps(), steps,

@@ -27,6 +27,7 @@ struct TubePriesConfig {
   ParticleParams particles{};
   int cells_across = 10;
   double dt_s = 0.0;                     // CFD step
+  double vtk_every_s = 0.0;              // [output] vtk_every_s; 0: only the final frame
   PressureCoupling pressure_coupling = PressureCoupling::piso;   // [numerics] pressure_coupling
   int n_coupling = 1;                    // DEM steps per CFD step
   double end_time_s = 0.0;
@@ -73,14 +74,17 @@ struct TubePriesRestart {
   int rank = 0;
 };
 
+class CfdDemFrames;
+
 /// Runs the plasma-only reference and the coupled tube; throws ConfigError for inputs found bad on the way
 /// (insertion impossible, particles outside the tube, DEM step, a checkpoint of another case). With restart.dir a
 /// checkpoint is written every c.checkpoint_every_wall_s and at the end; with restart.resume the run continues
 /// from it up to c.end_time_s (which may be later than the saved run's): the samples before the checkpoint are
 /// handed to `observe` again first, and Ht_d and Q are averaged over the whole series as if never stopped.
+/// `frames` (may be null) is handed the solvers after every CFD step (ParaView output; reads only).
 [[nodiscard]] TubePriesResult simulate_tube_pries(const TubePriesConfig& c,
                                                   const std::function<void(const TubePriesSample&)>& observe,
-                                                  const TubePriesRestart& restart = {});
+                                                  const TubePriesRestart& restart = {}, CfdDemFrames* frames = nullptr);
 
 /// `hemoscale run` entry: returns 0 after a completed run (the comparison is reported, not judged).
 int run_tube_pries(const hs::common::CaseRequest& request);

@@ -7,6 +7,7 @@
 #include "common/progress.hpp"
 #include "common/run_context.hpp"
 #include "common/run_folder.hpp"
+#include "unresolved/cases/cfd_dem_frames.hpp"
 #include "unresolved/cases/tube_pries.hpp"
 #include "unresolved/cases/tube_pries_checks.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
@@ -30,11 +31,13 @@ int run_tube_pries(const hs::common::CaseRequest& request) {
   // Checkpoints every checkpoint_every_wall_s and at the end; --resume replays the saved samples into a fresh
   // timeseries.csv, then continues (tube_cell.cpp's pattern).
   const TubePriesRestart restart{.dir = ctx.folder().checkpoint_dir(), .resume = ctx.resuming(), .rank = ctx.rank()};
+  // ParaView output, rank 0 only: particles.pvd + fields.pvd with vtk/ frames named by CFD step.
+  CfdDemFrames frames(ctx.rank() == 0 ? ctx.folder().path() : std::filesystem::path{}, c.vtk_every_s);
   if (ctx.resuming()) log.info("resuming from the checkpoint in {}", restart.dir.string());
   const TubePriesResult r = simulate_tube_pries(c, [&](const TubePriesSample& s) {
     series.row({s.time_s, s.q_blood_m3_s, s.q_rbc_m3_s, s.ht_d, s.pressure_iterations});
     progress.update(++done);
-  }, restart);
+  }, restart, &frames);
   progress.finish();
   hs::common::CheckList checks;
   check_tube_pries(c, r, {.quick = request.quick}, checks);
