@@ -54,7 +54,9 @@ int run_campaign(const CampaignArgs& args) {
 void add_campaign_command(CLI::App& cli, Action& action) {
   auto args = std::make_shared<CampaignArgs>();
   auto* cmd = cli.add_subcommand("campaign", "Run or resume a campaign (CAMPAIGN_DIR/campaign.toml): a grid of runs and their dataset");
-  cmd->add_option("CAMPAIGN_DIR", args->dir, "campaign folder, or its campaign.toml")->required()->check(CLI::ExistingPath);
+  cmd->add_option("CAMPAIGN_DIR", args->dir, "campaign folder, or its campaign.toml")
+      ->required()
+      ->check(CLI::ExistingPath);
   cmd->add_flag("--status", args->status, "print what is done, failed and left; run nothing");
   cmd->add_flag("--retry-failed", args->retry_failed, "run failed runs again");
   cmd->add_flag("--reopen-done", args->reopen_done,

@@ -44,7 +44,9 @@ int run_case(const RunArgs& args) {
   if (args.resume && hs::common::resume_finds_complete_run(args.output)) {
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    if (rank == 0) fmt::print("{}: --resume: the run is already complete (summary.json written); nothing changed\n", args.output);
+    if (rank == 0) {
+      fmt::print("{}: --resume: the run is already complete (summary.json written); nothing changed\n", args.output);
+    }
     return 0;
   }
   hs::common::CaseRequest request{.case_dir = file.parent_path(),

@@ -50,7 +50,9 @@ RunFolder RunFolder::open_existing(const std::filesystem::path& dir) {
 }
 
 bool resume_finds_complete_run(const std::filesystem::path& dir) {
-  if (!std::filesystem::is_directory(dir)) throw ConfigError(fmt::format("{}: no such run folder to resume", dir.string()));
+  if (!std::filesystem::is_directory(dir)) {
+    throw ConfigError(fmt::format("{}: no such run folder to resume", dir.string()));
+  }
   if (Checkpoint::exists(dir / "checkpoint")) return false;
   // write_summary() is a run's last act and adds the provenance: a summary.json with it means the run finished.
   if (std::ifstream in(dir / "summary.json"); in) {

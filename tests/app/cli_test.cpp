@@ -93,7 +93,8 @@ TEST(Cli, CampaignTakesTheFolderOrItsToml) {
   EXPECT_EQ(by_dir.code, 0) << by_dir.output;
   EXPECT_EQ(by_file.output, by_dir.output);   // the same campaign, the same table
   EXPECT_EQ(listing(), before) << "--status wrote into the campaign folder";
-  const auto other = run("campaign " + (dir.parent_path() / "../resolved/tube-poiseuille/case.toml").string() + " --status");
+  const fs::path not_a_campaign = dir.parent_path() / "../resolved/tube-poiseuille/case.toml";
+  const auto other = run("campaign " + not_a_campaign.string() + " --status");
   EXPECT_EQ(other.code, 2) << other.output;
   EXPECT_NE(other.output.find("give the campaign folder or its campaign.toml"), std::string::npos) << other.output;
 }

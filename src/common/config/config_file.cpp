@@ -46,13 +46,15 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
     }
   }
   return d[a.size()][b.size()];
 }
 
-/// The candidate closest to `key`, if it is close enough to be a likely typo: at most 2 edits, or a third of the length.
+/// The candidate closest to `key`, if close enough to be a likely typo: at most 2 edits, or a third of the length.
 std::optional<std::string> closest(std::string_view key, const std::vector<std::string>& candidates) {
   const std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
   std::optional<std::string> best;
