@@ -5,8 +5,11 @@
 #include <memory>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "app/commands.hpp"
 #include "campaign/campaign_runner.hpp"
+#include "common/errors.hpp"
 
 namespace hs::app {
 namespace {
@@ -19,8 +22,18 @@ struct CampaignArgs {
   int max_runs = -1;
 };
 
+/// The campaign folder, given as the folder or as its campaign.toml (as `run` takes a case folder or its file).
+std::filesystem::path campaign_dir(const std::filesystem::path& given) {
+  if (!std::filesystem::is_regular_file(given)) return given;
+  if (given.filename() != "campaign.toml") {
+    throw hs::common::ConfigError(fmt::format("{}: not a campaign; give the campaign folder or its campaign.toml",
+                                              given.string()));
+  }
+  return given.parent_path().empty() ? std::filesystem::path(".") : given.parent_path();
+}
+
 int run_campaign(const CampaignArgs& args) {
-  const auto spec = hs::campaign::read_campaign_spec(args.dir);
+  const auto spec = hs::campaign::read_campaign_spec(campaign_dir(args.dir));
   hs::campaign::CampaignRunner runner(spec, {.executable = std::filesystem::read_symlink("/proc/self/exe"),
                                              .retry_failed = args.retry_failed,
                                              .reopen_done = args.reopen_done,
@@ -41,7 +54,9 @@ int run_campaign(const CampaignArgs& args) {
 void add_campaign_command(CLI::App& cli, Action& action) {
   auto args = std::make_shared<CampaignArgs>();
   auto* cmd = cli.add_subcommand("campaign", "Run or resume a campaign (CAMPAIGN_DIR/campaign.toml): a grid of runs and their dataset");
-  cmd->add_option("CAMPAIGN_DIR", args->dir, "campaign folder")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("CAMPAIGN_DIR", args->dir, "campaign folder, or its campaign.toml")
+      ->required()
+      ->check(CLI::ExistingPath);
   cmd->add_flag("--status", args->status, "print what is done, failed and left; run nothing");
   cmd->add_flag("--retry-failed", args->retry_failed, "run failed runs again");
   cmd->add_flag("--reopen-done", args->reopen_done,

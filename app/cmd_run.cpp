@@ -6,11 +6,13 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include "app/commands.hpp"
 #include "app/registry.hpp"
 #include "common/config/config_file.hpp"
 #include "common/errors.hpp"
+#include "common/run_folder.hpp"
 
 namespace hs::app {
 namespace {
@@ -38,6 +40,14 @@ int run_case(const RunArgs& args) {
   if (it == types.end()) section.fail("type", fmt::format("unknown case type (known: {})", allowed));
   if (args.resume && args.output.empty()) {
     throw hs::common::ConfigError("--resume needs --output RUN_DIR: the run folder to continue");
+  }
+  if (args.resume && hs::common::resume_finds_complete_run(args.output)) {
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0) {
+      fmt::print("{}: --resume: the run is already complete (summary.json written); nothing changed\n", args.output);
+    }
+    return 0;
   }
   hs::common::CaseRequest request{.case_dir = file.parent_path(),
                                   .config = config.get(),

@@ -8,12 +8,14 @@
 #include <cerrno>
 #include <chrono>
 #include <ctime>
+#include <fstream>
 
 #include <fmt/format.h>
 
 #include "build_info.hpp"
 #include "common/errors.hpp"
 #include "common/io/atomic_file.hpp"
+#include "common/io/checkpoint.hpp"
 
 namespace hs::common {
 
@@ -45,6 +47,22 @@ RunFolder RunFolder::create_exact(const std::filesystem::path& dir) {
 RunFolder RunFolder::open_existing(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir)) throw ConfigError(fmt::format("{}: no such run folder to resume", dir.string()));
   return RunFolder(dir);
+}
+
+bool resume_finds_complete_run(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir)) {
+    throw ConfigError(fmt::format("{}: no such run folder to resume", dir.string()));
+  }
+  if (Checkpoint::exists(dir / "checkpoint")) return false;
+  // write_summary() is a run's last act and adds the provenance: a summary.json with it means the run finished.
+  if (std::ifstream in(dir / "summary.json"); in) {
+    const auto summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (summary.is_object() && summary.contains("provenance")) return true;
+  }
+  throw ConfigError(fmt::format("{}: --resume: no checkpoint to continue from ({} is missing) and the run did not "
+                                "finish (no summary.json); nothing was changed. Start it again without --resume into "
+                                "a new folder (outputs are never overwritten)",
+                                dir.string(), Checkpoint::file_for(dir / "checkpoint", 0).string()));
 }
 
 nlohmann::json provenance() {

@@ -30,6 +30,12 @@ class RunFolder {
   std::filesystem::path dir_;
 };
 
+/// The one rule for `--resume` (every case, before it builds anything): true when `dir` holds a finished run
+/// (summary.json written, no checkpoint left to continue), which the caller reports as complete and leaves untouched;
+/// false when there is a checkpoint to continue from. Throws ConfigError when `dir` is no run folder, or holds neither
+/// a checkpoint nor a finished run, since rerunning from the start would overwrite its outputs.
+[[nodiscard]] bool resume_finds_complete_run(const std::filesystem::path& dir);
+
 /// Version, git commit, build type, host, time: the provenance block of every summary.json (STYLE R12).
 nlohmann::json provenance();
 /// Writes `summary` (pretty-printed) atomically.

@@ -78,3 +78,23 @@ TEST(Cli, PriesTableAndPlotTakeTheJsonFilesName) {
   EXPECT_TRUE(fs::exists(dir / "first.csv")) << r.output;
   EXPECT_FALSE(fs::exists(dir / "pries_validation.csv"));
 }
+
+TEST(Cli, CampaignTakesTheFolderOrItsToml) {
+  const fs::path dir = fs::path(HS_SOURCE_DIR) / "cases/campaign/tube-re-rstar";
+  auto listing = [&dir] {
+    std::string out;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) out += e.path().string() + "\n";
+    return out;
+  };
+  const std::string before = listing();
+  const auto by_file = run("campaign " + (dir / "campaign.toml").string() + " --status");
+  EXPECT_EQ(by_file.code, 0) << by_file.output;
+  const auto by_dir = run("campaign " + dir.string() + " --status");
+  EXPECT_EQ(by_dir.code, 0) << by_dir.output;
+  EXPECT_EQ(by_file.output, by_dir.output);   // the same campaign, the same table
+  EXPECT_EQ(listing(), before) << "--status wrote into the campaign folder";
+  const fs::path not_a_campaign = dir.parent_path() / "../resolved/tube-poiseuille/case.toml";
+  const auto other = run("campaign " + not_a_campaign.string() + " --status");
+  EXPECT_EQ(other.code, 2) << other.output;
+  EXPECT_NE(other.output.find("give the campaign folder or its campaign.toml"), std::string::npos) << other.output;
+}

@@ -82,3 +82,26 @@ TEST(ConfigFile, RangesAndChoices) {
   EXPECT_THROW((void)r.one_of("mode", {"trt", "mrt"}), ConfigError);
   EXPECT_THROW((void)r.integer_in("n", 0, 10), ConfigError);
 }
+
+TEST(ConfigFile, UnknownKeySuggestsTheClosestAllowedKey) {
+  const auto msg = error_of("[fluid]\nkinematic_viscosity_m2_s = 1e-6\ndensty_kg_m3 = 1000\n", read_fluid);
+  EXPECT_NE(msg.find("[fluid] densty_kg_m3: unknown key (did you mean density_kg_m3?"), std::string::npos) << msg;
+  const auto swapped = error_of("[fluid]\nkinematic_viscosity_m2_s = 1e-6\ndesnity_kg_m3 = 1000\n", read_fluid);
+  EXPECT_NE(swapped.find("did you mean density_kg_m3?"), std::string::npos) << swapped;   // adjacent swap: 1 edit
+}
+
+TEST(ConfigFile, MissingKeyNamesTheCloseUnknownKeyPresent) {
+  const auto msg = error_of("[fluid]\nkinematic_viscosity_m2s = 1e-6\n", read_fluid);
+  EXPECT_NE(msg.find("case.toml: [fluid] kinematic_viscosity_m2_s: missing"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("the file has kinematic_viscosity_m2s, did you mean kinematic_viscosity_m2_s?"), std::string::npos)
+      << msg;
+}
+
+TEST(ConfigFile, FarOffKeyGetsNoSuggestion) {
+  const auto unknown = error_of("[fluid]\nkinematic_viscosity_m2_s = 1e-6\ncolour = 3\n", read_fluid);
+  EXPECT_NE(unknown.find("[fluid] colour: unknown key (allowed here:"), std::string::npos) << unknown;
+  EXPECT_EQ(unknown.find("did you mean"), std::string::npos) << unknown;
+  const auto missing = error_of("[fluid]\nviscosity = 1e-6\n", read_fluid);
+  EXPECT_NE(missing.find("kinematic_viscosity_m2_s: missing"), std::string::npos) << missing;
+  EXPECT_EQ(missing.find("did you mean"), std::string::npos) << missing;
+}

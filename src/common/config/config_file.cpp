@@ -2,6 +2,7 @@
 // Strict reading of a TOML case file into typed values.
 #include "common/config/config_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -35,6 +36,39 @@ std::string list_allowed(std::initializer_list<std::string_view> allowed) {
   return out;
 }
 
+/// Optimal string alignment distance (Damerau-Levenshtein without repeated edits of one substring):
+/// insertions, deletions, substitutions and swaps of two adjacent characters each cost 1.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+/// The candidate closest to `key`, if close enough to be a likely typo: at most 2 edits, or a third of the length.
+std::optional<std::string> closest(std::string_view key, const std::vector<std::string>& candidates) {
+  const std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
+  std::optional<std::string> best;
+  std::size_t best_d = limit + 1;
+  for (const auto& c : candidates) {
+    const std::size_t dist = edit_distance(key, c);
+    if (dist < best_d) {
+      best_d = dist;
+      best = c;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 ConfigSection::ConfigSection(ConfigFile& file, const toml::table* table, std::string path)
@@ -50,7 +84,16 @@ const toml::node* ConfigSection::lookup(std::string_view key) {
 void ConfigSection::fail(std::string_view key, std::string_view what) const {
   const std::string where = path_.empty() ? std::string(key) : fmt::format("[{}] {}", path_, key);
   const toml::node* node = table_ == nullptr ? nullptr : table_->get(key);
-  if (node == nullptr) throw ConfigError(fmt::format("{}: {}: {}", file_.name(), where, what));
+  if (node == nullptr) {
+    // A required key is missing: a key present here that nobody read and that is close to it is probably its typo.
+    std::vector<std::string> unread;
+    for (const auto& k : keys()) {
+      if (k != key && file_.read_keys_.count(join_path(path_, k)) == 0) unread.push_back(k);
+    }
+    const auto typo = closest(key, unread);
+    const std::string hint = typo ? fmt::format(" (the file has {}, did you mean {}?)", *typo, key) : "";
+    throw ConfigError(fmt::format("{}: {}: {}{}", file_.name(), where, what, hint));
+  }
   throw ConfigError(fmt::format("{}: {} = {}: {}", file_.name(), where, show(*node), what));
 }
 
@@ -304,14 +347,18 @@ void ConfigFile::finish() const {
       const std::string full = join_path(path, k.str());
       if (read_keys_.count(full) == 0) {
         std::string allowed;
+        std::vector<std::string> allowed_keys;
         const std::string prefix = path.empty() ? "" : path + ".";
         for (const auto& r : read_keys_) {
           if (r.rfind(prefix, 0) == 0 && r.find('.', prefix.size()) == std::string::npos) {
             allowed += (allowed.empty() ? "" : ", ") + r.substr(prefix.size());
+            allowed_keys.push_back(r.substr(prefix.size()));
           }
         }
+        const auto guess = closest(k.str(), allowed_keys);
+        const std::string hint = guess ? fmt::format("did you mean {}? ", *guess) : "";
         const std::string where = path.empty() ? std::string(k.str()) : fmt::format("[{}] {}", path, k.str());
-        throw ConfigError(fmt::format("{}: {}: unknown key (allowed here: {})", file_.string(), where,
+        throw ConfigError(fmt::format("{}: {}: unknown key ({}allowed here: {})", file_.string(), where, hint,
                                       allowed.empty() ? "none" : allowed));
       }
       if (const auto* sub = v.as_table()) self(self, *sub, full);
