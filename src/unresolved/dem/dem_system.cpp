@@ -35,16 +35,21 @@ DemSystem::DemSystem(const DemSettings& settings, const hs::common::Shape* walls
   if (walls_ != nullptr) wall_contacts_ = std::make_unique<WallContacts>(*walls_, law_);
 }
 
+ParticleState DemSystem::new_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s,
+                                      std::int64_t id) const {
+  const ParticleParams& p = settings_.params;
+  return {.position_m = position_m,
+          .velocity_m_s = velocity_m_s,
+          .angular_velocity_rad_s = {},
+          .radius_m = p.radius_m(),
+          .mass_kg = p.mass_kg(),
+          .id = id};
+}
+
 std::size_t DemSystem::add_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s,
                                     std::optional<std::int64_t> id) {
   initialized_ = false;
-  const ParticleParams& p = settings_.params;
-  return particles_.add({.position_m = position_m,
-                         .velocity_m_s = velocity_m_s,
-                         .angular_velocity_rad_s = {},
-                         .radius_m = p.radius_m(),
-                         .mass_kg = p.mass_kg(),
-                         .id = id.value_or(static_cast<std::int64_t>(particles_.n_owned()))});
+  return particles_.add(new_particle(position_m, velocity_m_s, id.value_or(static_cast<std::int64_t>(particles_.n_owned()))));
 }
 
 void DemSystem::begin_edit() {
@@ -60,13 +65,7 @@ void DemSystem::begin_edit() {
 std::size_t DemSystem::insert_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s,
                                        std::int64_t id) {
   begin_edit();
-  const ParticleParams& p = settings_.params;
-  return particles_.add({.position_m = position_m,
-                         .velocity_m_s = velocity_m_s,
-                         .angular_velocity_rad_s = {},
-                         .radius_m = p.radius_m(),
-                         .mass_kg = p.mass_kg(),
-                         .id = id});
+  return particles_.add(new_particle(position_m, velocity_m_s, id));
 }
 
 std::size_t DemSystem::remove_particles(const std::vector<bool>& remove) {

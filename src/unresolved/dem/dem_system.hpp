@@ -89,6 +89,9 @@ class DemSystem {
 
  private:
   void begin_edit();
+  /// A sphere of the settings' radius and mass at rest in rotation.
+  [[nodiscard]] ParticleState new_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s,
+                                           std::int64_t id) const;
   void rebuild();
   void compute_forces();
 

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "unresolved/cases/short_tube_case.hpp"
 #include "common/config/config_file.hpp"
 #include "common/errors.hpp"
 #include "common/io/checkpoint.hpp"
@@ -27,30 +28,10 @@ using hs::unresolved::TubePriesSample;
 /// exercised), with the Haberman-Sayre wall correction, a lift (its per-sphere column) and the suspension viscosity
 /// (its factor field) on; `steps` CFD steps of 0.2 ms (125 DEM steps each).
 std::string restart_case(int steps) {
-  return R"([case]
-type = "tube-pries"
-[geometry]
-diameter_m = 30e-6
-length_m = 30e-6
-[fluid]
-density_kg_m3 = 1025.0
-kinematic_viscosity_m2_s = 1.2e-6
-[flow]
-pressure_gradient_Pa_m = -4.4e4
-[cells]
-tube_hematocrit = 0.30
-[particles]
-youngs_modulus_Pa = 1.0e3
-[coupling]
-drag = "schiller_naumann"
-lift = "saffman_mei"
-suspension_viscosity = "pries_bulk"
-wall_correction = "haberman_sayre"
-[numerics]
-cells_across_diameter = 10
-dt_s = 2e-4
-n_coupling = 125
-end_time_s = )" + std::to_string(2e-4 * steps) + "\n";
+  return hs::test::short_tube_case("0.30",
+                                   "drag = \"schiller_naumann\"\nlift = \"saffman_mei\"\nsuspension_viscosity = \"pries_bulk\"\n"
+                                   "wall_correction = \"haberman_sayre\"\n",
+                                   "125", std::to_string(2e-4 * steps));
 }
 
 hs::unresolved::TubePriesConfig config(int steps) {

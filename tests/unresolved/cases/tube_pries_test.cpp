@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "unresolved/cases/short_tube_case.hpp"
 #include "analysis/pries1992.hpp"
 #include "common/config/config_file.hpp"
 #include "common/errors.hpp"
@@ -52,28 +53,7 @@ TEST(TubePriesCase, CommittedCaseRunsAndSummarises) {
 }
 
 std::string pries_case(const std::string& hematocrit, const std::string& drag, const std::string& n_coupling) {
-  return R"([case]
-type = "tube-pries"
-[geometry]
-diameter_m = 30e-6
-length_m = 30e-6
-[fluid]
-density_kg_m3 = 1025.0
-kinematic_viscosity_m2_s = 1.2e-6
-[flow]
-pressure_gradient_Pa_m = -4.4e4
-[cells]
-tube_hematocrit = )" + hematocrit + R"(
-[particles]
-youngs_modulus_Pa = 1.0e3
-[coupling]
-drag = ")" + drag + R"("
-[numerics]
-cells_across_diameter = 10
-dt_s = 2e-4
-n_coupling = )" + n_coupling + R"(
-end_time_s = 2e-3
-)";
+  return hs::test::short_tube_case(hematocrit, "drag = \"" + drag + "\"\n", n_coupling, "2e-3");
 }
 
 void expect_config_error(const std::string& text, const std::string& key) {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "unresolved/cases/short_tube_case.hpp"
 #include "common/config/config_file.hpp"
 #include "common/io/vtk_image.hpp"
 #include "unresolved/cases/tube_pries.hpp"
@@ -19,25 +20,7 @@ namespace fs = std::filesystem;
 
 /// A 30 um tube, 10 cells across, 0.2 ms steps; frames every 0.4 ms.
 std::string vtk_case(int steps) {
-  return R"([case]
-type = "tube-pries"
-[geometry]
-diameter_m = 30e-6
-length_m = 30e-6
-[fluid]
-density_kg_m3 = 1025.0
-kinematic_viscosity_m2_s = 1.2e-6
-[flow]
-pressure_gradient_Pa_m = -4.4e4
-[cells]
-tube_hematocrit = 0.30
-[particles]
-youngs_modulus_Pa = 1.0e3
-[numerics]
-cells_across_diameter = 10
-dt_s = 2e-4
-n_coupling = 125
-end_time_s = )" + std::to_string(2e-4 * steps) + "\n[output]\nvtk_every_s = 4e-4\n";
+  return hs::test::short_tube_case("0.30", "", "125", std::to_string(2e-4 * steps), "[output]\nvtk_every_s = 4e-4\n");
 }
 
 std::string slurp(const fs::path& f) {
