@@ -40,13 +40,13 @@ void Log::write(Level level, const std::string& message) {
   if (level < threshold_ || rank_ != 0) return;
   if (!quiet_ || level >= Level::warning) {
     if (level == Level::info) {
-      std::fprintf(stderr, "%s\n", message.c_str());
+      std::fprintf(stderr, "%s%s\n", prefix_.c_str(), message.c_str());
     } else {
-      std::fprintf(stderr, "%s: %s\n", tag(level), message.c_str());
+      std::fprintf(stderr, "%s%s: %s\n", prefix_.c_str(), tag(level), message.c_str());
     }
   }
   if (file_.is_open()) {
-    file_ << local_timestamp() << ' ' << tag(level) << ": " << message << '\n';
+    file_ << local_timestamp() << ' ' << prefix_ << tag(level) << ": " << message << '\n';
     file_.flush();
   }
 }

@@ -23,6 +23,8 @@ class Log {
   /// Also write every message to `file` (appending, so a resumed run keeps its history).
   void open_file(const std::filesystem::path& file);
   void set_quiet(bool quiet) { quiet_ = quiet; }
+  /// Put before every message (e.g. "[--quick] ").
+  void set_prefix(std::string prefix) { prefix_ = std::move(prefix); }
 
   void write(Level level, const std::string& message);
 
@@ -47,6 +49,7 @@ class Log {
   int rank_;
   Level threshold_;
   bool quiet_ = false;
+  std::string prefix_;
   std::ofstream file_;
 };
 

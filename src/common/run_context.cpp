@@ -15,6 +15,7 @@ RunContext RunContext::start(const CaseRequest& request, const std::string& case
   RunContext ctx;
   ctx.case_type_ = case_type;
   ctx.resume_ = request.resume;
+  ctx.quick_ = request.quick;
   ctx.show_progress_ = !request.quiet;
   ctx.start_ = std::chrono::steady_clock::now();
   int mpi_on = 0;
@@ -49,8 +50,14 @@ RunContext RunContext::start(const CaseRequest& request, const std::string& case
   ctx.folder_ = std::make_unique<RunFolder>(RunFolder::open_existing(path));
   ctx.log_ = std::make_unique<Log>(ctx.rank_);
   ctx.log_->open_file(ctx.folder_->file("log.txt"));
-  if (ctx.rank_ == 0) request.config->write_resolved(ctx.folder_->file("case.resolved.toml"));
-  ctx.log_->info("{} {}: {}", request.resume ? "resuming" : "running", case_type, ctx.folder_->path().string());
+  // Every line of a --quick run says so: its numbers come from a coarse, short smoke version of the case.
+  if (request.quick) ctx.log_->set_prefix("[--quick] ");
+  if (ctx.rank_ == 0) {
+    request.config->write_resolved(ctx.folder_->file("case.resolved.toml"), request.quick, request.resume);
+  }
+  ctx.log_->info("{} {}{}: {}", request.resume ? "resuming" : "running", case_type,
+                 request.quick ? " (--quick: the coarse CI version, a smoke test, not a result)" : "",
+                 ctx.folder_->path().string());
   return ctx;
 }
 
@@ -63,6 +70,7 @@ void RunContext::write_summary(nlohmann::json summary) const {
   summary["case_type"] = case_type_;
   summary["mpi_ranks"] = ranks_;
   summary["wall_time_s"] = wall_seconds();
+  summary["quick"] = quick_;
   summary["provenance"] = provenance();
   write_json(folder_->file("summary.json"), summary);
 }

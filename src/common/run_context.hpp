@@ -26,10 +26,12 @@ class RunContext {
   [[nodiscard]] int rank() const { return rank_; }
   [[nodiscard]] int ranks() const { return ranks_; }
   [[nodiscard]] bool resuming() const { return resume_; }
+  /// --quick: the coarse CI version of the case; recorded in case.resolved.toml, summary.json and every log line.
+  [[nodiscard]] bool quick() const { return quick_; }
   [[nodiscard]] bool show_progress() const { return show_progress_ && rank_ == 0; }
   [[nodiscard]] double wall_seconds() const;
 
-  /// Adds provenance, case type, ranks and wall time to `summary` and writes summary.json (rank 0).
+  /// Adds provenance, case type, ranks, wall time and `quick` to `summary` and writes summary.json (rank 0).
   void write_summary(nlohmann::json summary) const;
 
  private:
@@ -40,6 +42,7 @@ class RunContext {
   int rank_ = 0;
   int ranks_ = 1;
   bool resume_ = false;
+  bool quick_ = false;
   bool show_progress_ = true;
   std::chrono::steady_clock::time_point start_;
 };

@@ -367,11 +367,14 @@ void ConfigFile::finish() const {
   walk(walk, table_, "");
 }
 
-void ConfigFile::write_resolved(const std::filesystem::path& file) const {
+void ConfigFile::write_resolved(const std::filesystem::path& file, bool quick, bool resume) const {
   std::ofstream out(file);
   if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
   out << "# Written by hemoscale: the case as run, every default filled in, derived values under [*.derived].\n";
-  out << resolved_ << '\n';
+  if (quick) out << "# Run with --quick: the coarse, short CI version of the case; a smoke test, not a result.\n";
+  toml::table as_run = resolved_;
+  as_run.insert_or_assign("invocation", toml::table{{"quick", quick}, {"resume", resume}});
+  out << as_run << '\n';
 }
 
 }  // namespace hs::common

@@ -89,7 +89,9 @@ class ConfigFile {
   void finish() const;
   /// The input with every default filled in and derived values added (written as case.resolved.toml).
   [[nodiscard]] const toml::table& resolved() const { return resolved_; }
-  void write_resolved(const std::filesystem::path& file) const;
+  /// Writes resolved() with an [invocation] table of how the run was asked for (`quick`: the coarse CI version of the
+  /// case, whose values above are the ones it used; `resume`: continued from a checkpoint).
+  void write_resolved(const std::filesystem::path& file, bool quick = false, bool resume = false) const;
 
  private:
   friend class ConfigSection;

@@ -2,6 +2,7 @@
 // The plate cases: one RBC between parallel walls in simple shear or in plane Poiseuille flow.
 #include "resolved/cases/plate_cell.hpp"
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -9,6 +10,7 @@
 
 #include "common/run_context.hpp"
 #include "resolved/cases/cell_simulation.hpp"
+#include "resolved/cases/lattice_budget.hpp"
 #include "resolved/cases/plate_cell_checks.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
@@ -24,13 +26,18 @@ struct PlateCellRun : CellSimulation {
   int marker = 0;   // the vertex whose phase about the centroid is tracked
 };
 
+std::array<int, 3> plate_nodes(const PlateCellConfig& c) {
+  const double dx = c.numerics.dx_m;
+  return {static_cast<int>(std::lround(c.length_m / dx)), static_cast<int>(std::lround(c.gap_m / dx)),
+          static_cast<int>(std::lround(c.width_m / dx))};
+}
+
 /// Node j sits at y = (j + 1/2) dx: the half-way walls of the y faces are then at y = 0 and y = H = ny dx.
 std::unique_ptr<PlateCellRun> build(const PlateCellConfig& c) {
   const CellNumerics& n = c.numerics;
   auto run = std::make_unique<PlateCellRun>(PlateCellRun{
       {.units = common::UnitConverter(common::LatticeScales{.dx_m = n.dx_m, .dt_s = n.dt_s, .rho_kg_m3 = c.density_kg_m3}),
-       .nodes = {static_cast<int>(std::lround(c.length_m / n.dx_m)), static_cast<int>(std::lround(c.gap_m / n.dx_m)),
-                 static_cast<int>(std::lround(c.width_m / n.dx_m))},
+       .nodes = plate_nodes(c),
        .origin_m = {0.0, 0.5 * n.dx_m, 0.0}, .lattice = nullptr, .membrane = nullptr, .cell = nullptr},
       c, 0});
   auto& r = *run;
@@ -103,6 +110,9 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
 int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   const char* type = flow == PlateFlow::shear ? "shear" : "migration";
   const PlateCellConfig c = read_plate_cell(*request.config, flow, request.quick);
+  require_lattice_memory(*request.config, plate_nodes(c),
+                         {{"[geometry] length_m", c.length_m, true}, {"[geometry] gap_m", c.gap_m, true},
+                          {"[geometry] width_m", c.width_m, true}, {"[numerics] dx_m", c.numerics.dx_m, true}});
   common::RunContext ctx = common::RunContext::start(request, type);
   auto run = build(c);
   PlateCellRun& r = *run;

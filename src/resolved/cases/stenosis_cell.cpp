@@ -15,6 +15,7 @@
 #include "common/geometry/stenosed_channel.hpp"
 #include "common/run_context.hpp"
 #include "resolved/cases/cell_simulation.hpp"
+#include "resolved/cases/lattice_budget.hpp"
 #include "resolved/cases/stenosis_cell_config.hpp"
 #include "resolved/cases/stenosis_cell_series.hpp"
 #include "resolved/cases/stenosis_flow.hpp"
@@ -162,6 +163,9 @@ nlohmann::json summary_of(const StenosisRun& r, const StenosisSeries& series, co
 
 int run_stenosis(const common::CaseRequest& request) {
   const StenosisCellConfig c = read_stenosis_cell(*request.config, request.quick);
+  require_lattice_memory(*request.config, stenosis_grid(c).nodes,
+                         {{"[geometry] length_m", c.length_m, true}, {"[geometry] height_m", c.height_m, true},
+                          {"[geometry] width_m", c.width_m, true}, {"[numerics] dx_m", c.numerics.dx_m, true}});
   common::RunContext ctx = common::RunContext::start(request, "stenosis");
   const common::UnitConverter units(common::LatticeScales{.dx_m = c.numerics.dx_m, .dt_s = c.numerics.dt_s,
                                                           .rho_kg_m3 = c.density_kg_m3});

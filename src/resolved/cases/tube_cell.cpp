@@ -12,6 +12,7 @@
 #include "common/geometry/tube.hpp"
 #include "common/run_context.hpp"
 #include "resolved/cases/cell_simulation.hpp"
+#include "resolved/cases/lattice_budget.hpp"
 #include "resolved/cases/tube_cell_config.hpp"
 #include "resolved/cases/tube_cell_series.hpp"
 #include "resolved/measure/cell_shape.hpp"
@@ -111,6 +112,9 @@ TubeCellSample sample_state(const TubeCellRun& r, double time_s, const Vec3& for
 
 int run_tube_cell(const common::CaseRequest& request) {
   const TubeCellConfig c = read_tube_cell(*request.config, request.quick);
+  require_lattice_memory(*request.config, lattice_nodes(c),
+                         {{"[geometry] radius_m", c.radius_m, true}, {"[geometry] length_m", c.length_m, true},
+                          {"[numerics] dx_m", c.dx_m, true}});
   common::RunContext ctx = common::RunContext::start(request, "tube-cell");
   auto run = build(c);
   TubeCellRun& r = *run;

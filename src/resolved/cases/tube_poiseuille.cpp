@@ -43,13 +43,6 @@ using common::Vec3;
 constexpr double kUMaxTolerance = 0.01;
 constexpr double kFlowRateTolerance = 0.02;
 
-/// Global node counts: an odd number across so the tube axis passes through a node (u_max is then a node value).
-std::array<int, 3> lattice_nodes(const TubePoiseuilleConfig& c) {
-  int across = static_cast<int>(std::floor(c.box_width_m / c.dx_m + 1e-9)) + 1;
-  if (across % 2 == 0) --across;
-  return {across, across, std::max(2, static_cast<int>(std::lround(c.length_m / c.dx_m)))};
-}
-
 struct Observables {
   double u_max_lu;
   double flow_rate_lu;   // sum of u_z over the fluid nodes / number of slices (lattice units dx^3/dt)
@@ -179,7 +172,7 @@ int run_tube_poiseuille(const common::CaseRequest& request) {
   const int rank = ctx.rank();
   if (rank == 0) units.write(ctx.folder().file("units.txt"));
   common::Log& log = ctx.log();
-  const auto nodes = lattice_nodes(c);
+  const auto nodes = tube_poiseuille_nodes(c);
   const double centre_lu = 0.5 * (nodes[0] - 1);
   const Vec3 origin_m{-centre_lu * c.dx_m, -centre_lu * c.dx_m, 0.0};
   const common::Tube tube(common::TubeSpec{.start_m = {0.0, 0.0, -c.dx_m}, .end_m = {0.0, 0.0, c.length_m + c.dx_m},

@@ -3,9 +3,12 @@
 #include "resolved/cases/tube_poiseuille_config.hpp"
 #include "common/fluid_properties.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
+
+#include "resolved/cases/lattice_budget.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -65,12 +68,23 @@ TubePoiseuilleConfig read_tube_poiseuille(hs::common::ConfigFile& file, bool qui
   numerics.derived("time_step_s", c.dt_s);
   numerics.derived("lattice_mach", c.lattice_mach);
   root.section("flow").derived("u_max_m_s", c.u_max_m_s);
+  require_lattice_memory(file, tube_poiseuille_nodes(c),
+                         {{"[geometry] radius_m", c.radius_m, true}, {"[geometry] length_m", c.length_m, true},
+                          {"[numerics] dx_m", quick ? c.dx_m / kQuickCoarsening : c.dx_m, true}});
   if (c.lattice_mach > kMachMax) {
     root.section("flow").fail("reynolds", fmt::format("gives U_max = {:g} m/s and a lattice Mach number {:.3f} > {} at dx_m = "
                                                       "{:g}, tau = {:g}; lower reynolds, dx_m or tau",
                                                       c.u_max_m_s, c.lattice_mach, kMachMax, c.dx_m, c.collision.tau));
   }
   return c;
+}
+
+std::array<int, 3> tube_poiseuille_nodes(const TubePoiseuilleConfig& c) {
+  const double across_d = std::floor(c.box_width_m / c.dx_m + 1e-9) + 1.0;
+  // Clamped to int: a size beyond it is refused by the memory check (which sees the clamped count, still far too big).
+  int across = static_cast<int>(std::min(across_d, 2.0e9));
+  if (across % 2 == 0) --across;
+  return {across, across, std::max(2, static_cast<int>(std::min(std::round(c.length_m / c.dx_m), 2.0e9)))};
 }
 
 }  // namespace hs::resolved

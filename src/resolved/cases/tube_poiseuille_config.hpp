@@ -2,6 +2,7 @@
 // The typed input of the tube-poiseuille case, read strictly from case.toml, with its derived lattice values.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "common/config/config_file.hpp"
@@ -39,5 +40,8 @@ struct TubePoiseuilleConfig {
 /// Reads and checks the whole case (strict: unknown keys, ranges, redundant keys, Mach, fit in the box).
 /// `quick` coarsens dx by 2.5 (the CI version). Throws hs::common::ConfigError naming file and key.
 TubePoiseuilleConfig read_tube_poiseuille(hs::common::ConfigFile& file, bool quick);
+
+/// Global node counts: an odd number across so the tube axis passes through a node (u_max is then a node value).
+[[nodiscard]] std::array<int, 3> tube_poiseuille_nodes(const TubePoiseuilleConfig& c);
 
 }  // namespace hs::resolved
