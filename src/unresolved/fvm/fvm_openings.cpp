@@ -10,11 +10,19 @@ using hs::common::Vec3;
 
 void FvmSolver::build_opening_boundaries() {
   const auto& openings = grid_.openings();
+  int outlets = 0;
+  double level_Pa = 0.0;
+  for (const auto& oc : openings) {
+    if (oc.type != OpeningFlowType::pressure_outlet) continue;
+    level_Pa += oc.pressure_Pa;
+    ++outlets;
+  }
+  if (outlets > 0) p_level_kin_ = level_Pa / outlets / fluid_.density_kg_m3;
   for (std::size_t k = 0; k < openings.size(); ++k) {
     if (openings[k].type != OpeningFlowType::pressure_outlet) continue;
     const OpeningNodes& on = grid_.opening_nodes(k);
     const long st = p_.stride(on.axis);
-    const double p_kin = openings[k].pressure_Pa / fluid_.density_kg_m3;
+    const double p_kin = openings[k].pressure_Pa / fluid_.density_kg_m3 - p_level_kin_;
     for (const std::size_t node : on.nodes) {
       const long idx = static_cast<long>(node);
       // Face node index i along the axis sits between cells i - 1 and i: the low side's first cell is i = 0.
