@@ -60,10 +60,12 @@ FvmGrid::FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec)
       }
     }
   }
+  set_up_openings();
   for (int c = 0; c < 3; ++c) {
     classify_nodes(c);
     compute_apertures(c);
   }
+  if (!spec_.openings.empty()) finish_openings();
   compute_fluid_fractions();
 }
 
@@ -121,6 +123,7 @@ void FvmGrid::classify_nodes(int c) {
         const int along = std::array<int, 3>{i, j, k}[static_cast<std::size_t>(c)];
         if (!periodic(c) && (along == 0 || along == n_[static_cast<std::size_t>(c)])) {
           const SideCondition& s = side(c, along == 0 ? 0 : 1);
+          if (!spec_.openings.empty() && classify_opening_node(c, {i, j, k}, p)) continue;
           if (s.type == SideType::wall) {
             nk = NodeKind::fixed;
             fixed(i, j, k) = s.wall_velocity_m_s[c];
@@ -232,14 +235,21 @@ NodeLink FvmGrid::link(int c, std::array<int, 3> node, int dir) const {
   NodeLink l;
   if (!in_range(c, a, m[static_cast<std::size_t>(a)])) {
     const SideCondition& sc = side(a, s > 0 ? 1 : 0);
-    if (sc.type == SideType::pressure_outlet || a == c) {
+    Vec3 wall_point = p;
+    wall_point[a] += 0.5 * s * dx_m_;
+    // An opening holding the link's end on the face: a pressure outlet is open (zero gradient), an inlet or a
+    // flow-fraction outlet holds a tangential velocity 0.
+    const hs::common::OpeningCondition* open =
+        spec_.openings.empty() ? nullptr : opening_at(a, s > 0 ? 1 : 0, wall_point);
+    const bool open_outlet = open != nullptr && open->type == hs::common::OpeningFlowType::pressure_outlet;
+    if (sc.type == SideType::pressure_outlet || a == c || open_outlet) {
       l.type = NodeLink::Type::neumann;   // zero gradient (an active node on the box is an outlet face)
       return l;
     }
-    Vec3 wall_point = p;
-    wall_point[a] += 0.5 * s * dx_m_;
     l.type = NodeLink::Type::dirichlet;
-    l.value = sc.type == SideType::velocity_inlet ? sc.inlet_velocity_m_s(wall_point)[c] : sc.wall_velocity_m_s[c];
+    l.value = open != nullptr                          ? 0.0
+              : sc.type == SideType::velocity_inlet ? sc.inlet_velocity_m_s(wall_point)[c]
+                                                      : sc.wall_velocity_m_s[c];
     l.theta = std::max(kMinLinkFraction, shape_fraction(0.5));
     return l;
   }

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 // The Cartesian finite-volume grid over a Shape: staggered (MAC) velocity nodes, cut-cell face apertures
-// and wall distances along grid links, and the boundary condition of each side of the domain box.
+// and wall distances along grid links, and the boundary conditions: per side of the domain box, and per named opening.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
+#include "common/geometry/opening_condition.hpp"
 #include "common/geometry/shape.hpp"
 #include "common/vec3.hpp"
 #include "unresolved/fvm/block_field.hpp"
@@ -23,10 +25,32 @@ struct SideCondition {
   std::function<hs::common::Vec3(const hs::common::Vec3&)> inlet_velocity_m_s;  // velocity_inlet: u(x)
 };
 
+/// Openings (`openings`) refine the sides: a face node (the centre of a cell face on the box) belongs to the opening
+/// whose disc holds it (lateral distance from the opening's centre <= radius_m) when it is in the fluid (signed
+/// distance < 0); every other fluid face node of that side follows the side's condition, which must be `wall`. So a
+/// box side holds any number of inlets and outlets, and walls around and between them. Each opening:
+///  flow_rate_inlet:      fixed nodes, u_n = U (1 - r^2 / R^2) into the domain (r = lateral distance, R = radius_m),
+///                        with U set so that the *discrete* flux sum(aperture dx^2 u_n) over its nodes equals
+///                        flow_rate_m3_s to round-off (the cut faces at the rim carry ~0.7% more than the exact
+///                        parabola's pi R^2 U at 10 cells across; normalising by the discrete sum removes it);
+///  flow_fraction_outlet: the same profile out of the domain, its discrete flux = flow_fraction x the summed inlet
+///                        flow rates;
+///  pressure_outlet:      active nodes (zero normal gradient of the velocity, and of the tangential velocity across
+///                        the face), pressure = pressure_Pa on the face.
+/// The tangential velocity at an inlet or flow-fraction outlet is 0, as at a wall. With eps < 1 in the cells next to
+/// an opening the fluid volume flux through it is eps times the above (the nodes hold the interstitial velocity).
 struct FvmGridSpec {
   hs::common::Box3 box_m;                 // the domain; each extent must be a whole number of cells
   double dx_m;                            // cubic cells
   std::array<SideCondition, 6> sides;     // x-, x+, y-, y+, z-, z+ (a periodic axis is periodic on both sides)
+  std::vector<hs::common::OpeningCondition> openings{};   // on wall sides only; checked by check_opening_conditions
+};
+
+/// The face nodes of one opening: the velocity nodes of component `axis` on the box face `axis` (`high`: at box_m.hi).
+struct OpeningNodes {
+  int axis = 0;
+  int high = 0;
+  std::vector<std::size_t> nodes;         // flat indices into the component's BlockFields
 };
 
 /// Kind of a velocity node (the centre of a cell face, normal component only).
@@ -61,6 +85,11 @@ class FvmGrid {
   [[nodiscard]] bool periodic(int axis) const { return periodic_[static_cast<std::size_t>(axis)]; }
   [[nodiscard]] const SideCondition& side(int axis, int high) const { return spec_.sides[static_cast<std::size_t>(2 * axis + high)]; }
   [[nodiscard]] const hs::common::Shape& shape() const { return shape_; }
+  /// The openings of the spec, in its order, and the face nodes each one holds (fvm_grid_openings.cpp).
+  [[nodiscard]] const std::vector<hs::common::OpeningCondition>& openings() const { return spec_.openings; }
+  [[nodiscard]] const OpeningNodes& opening_nodes(std::size_t k) const { return opening_nodes_[k]; }
+  /// The opening on box side (axis, high) whose disc holds x (x on that side's plane), or nullptr.
+  [[nodiscard]] const hs::common::OpeningCondition* opening_at(int axis, int high, const hs::common::Vec3& x_m) const;
 
   /// Number of velocity nodes of component c along axis a (faces along c, cells otherwise; a periodic
   /// axis has its last face identified with the first).
@@ -91,6 +120,10 @@ class FvmGrid {
   void classify_nodes(int c);
   void compute_apertures(int c);
   void compute_fluid_fractions();
+  void set_up_openings();
+  /// Classifies face node (c, i, j, k) at position p when an opening holds it; false otherwise.
+  bool classify_opening_node(int c, std::array<int, 3> ijk, const hs::common::Vec3& p);
+  void finish_openings();
   [[nodiscard]] bool in_range(int c, int a, int idx) const;
 
   const hs::common::Shape& shape_;
@@ -104,6 +137,7 @@ class FvmGrid {
   std::array<BlockField<double>, 3> aperture_;
   std::array<BlockField<double>, 3> area_;
   BlockField<double> fluid_fraction_;
+  std::vector<OpeningNodes> opening_nodes_;
 };
 
 /// Fills the ghost layer of a cell-centred field that the coupling sets (Us, f; the solver fills those of eps and

@@ -105,6 +105,7 @@ void FvmSolver::build_pressure_matrix() {
     a.row_ptr[static_cast<std::size_t>(r) + 1] = static_cast<int>(a.cols.size());
   }
   pressure_.set_matrix(a);
+  if (!outlet_faces_.empty()) add_outlet_pressures();
 }
 
 void FvmSolver::fill_pressure_ghosts() {
@@ -121,6 +122,10 @@ void FvmSolver::fill_pressure_ghosts() {
       // p = 0 on the outlet face: the ghost mirrors the first cell with opposite sign.
       p_.for_each_in_plane(a, hi == 1 ? na : -1, [&](std::size_t idx) { p_[idx] = -p_[idx]; });
     }
+  }
+  // Openings' pressure outlets: p = p_b on the face, so the ghost cell mirrors the first cell about p_b.
+  for (const OutletFace& f : outlet_faces_) {
+    p_[static_cast<std::size_t>(f.ghost)] = 2.0 * f.p_kin - p_[static_cast<std::size_t>(f.interior)];
   }
 }
 
@@ -145,6 +150,7 @@ void FvmSolver::pressure_corrector(bool final) {
              face_average(eps_, ax, idx) * ap[static_cast<std::size_t>(idx)] * hb[static_cast<std::size_t>(idx)];
     }
     p_rhs_[static_cast<std::size_t>(r)] = r == p_ref_row_ ? 0.0 : -div * inv_h - deps_dt_[static_cast<std::size_t>(idx)];
+    if (!p_bc_.empty()) p_rhs_[static_cast<std::size_t>(r)] += p_bc_[static_cast<std::size_t>(r)];
     p_x_[static_cast<std::size_t>(r)] = p_[static_cast<std::size_t>(idx)];
   }
   SolveTolerance tol = piso_.pressure;

@@ -115,7 +115,8 @@ Vec3 FvmSolver::cell_velocity(int i, int j, int k) const {
 
 double FvmSolver::cell_pressure_Pa(int i, int j, int k) const {
   const Vec3 x = grid_.cell_centre_m(i, j, k);
-  return fluid_.density_kg_m3 * (p_(i, j, k) + drive_gradient_ * (x[drive_.axis] - grid_.origin_m()[drive_.axis]));
+  return fluid_.density_kg_m3 *
+         (p_(i, j, k) + p_level_kin_ + drive_gradient_ * (x[drive_.axis] - grid_.origin_m()[drive_.axis]));
 }
 
 }  // namespace hs::unresolved

@@ -53,6 +53,7 @@ FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const Pi
     build_component(c);
   }
   build_pressure_rows();
+  if (!grid.openings().empty()) build_opening_boundaries();
   update_fluxes();
 }
 
@@ -210,6 +211,9 @@ void FvmSolver::fill_velocity_ghosts(int c, BlockField<double>& field) const {
       if (side.type != SideType::wall) continue;
       const double wall = 2.0 * side.wall_velocity_m_s[c];
       field.for_each_in_plane(a, hi == 1 ? n : -1, [&](std::size_t idx) { field[idx] = wall - field[idx]; });
+      for (const OpenGhost& g : open_ghosts_[static_cast<std::size_t>(c)]) {
+        if (g.axis == a && g.high == hi) field[g.ghost] = field[g.interior];
+      }
     }
   }
 }
