@@ -25,6 +25,7 @@ constexpr double us_per_s = 1e6;
 constexpr double pN_per_N = 1e12;
 constexpr double pN_um_per_J = 1e18;
 constexpr double pN_um_per_N_m = 1e6;   // N/m -> pN/um
+constexpr double pN_us_per_um_per_N_s_m = 1e12;   // N s/m -> pN us/um
 
 Positions to_positions(const std::vector<Vec3>& v, double scale) {
   Positions p(static_cast<Eigen::Index>(v.size()), 3);
@@ -97,28 +98,53 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   Positions gv, ga;
   energy_->volume_area_gradients(Positions(x_um_.rowwise() - c), gv, ga);
   const EnergyModuli& k = energy_->moduli();
-  const double coef[2] = {k.volume_modulus_pN_um2 / energy_->rest_volume(), k.global_area_pN_um / energy_->rest_area()};
+  woodbury_coef_[0] = k.volume_modulus_pN_um2 / energy_->rest_volume();
+  woodbury_coef_[1] = k.global_area_pN_um / energy_->rest_area();
   const Positions* grads[2] = {&gv, &ga};
-  Eigen::Matrix2d core = Eigen::Matrix2d::Zero();
   for (int j = 0; j < 2; ++j) {
-    if (coef[j] <= 0.0) continue;
+    if (woodbury_coef_[j] <= 0.0) continue;
     woodbury_u_[woodbury_rank_] = *grads[j];
-    woodbury_z_[woodbury_rank_] = proxy_.solve(*grads[j]);
-    core(woodbury_rank_, woodbury_rank_) = 1.0 / coef[j];
+    woodbury_core_diag_[woodbury_rank_] = 1.0 / woodbury_coef_[j];
     ++woodbury_rank_;
+  }
+  if (material.viscosity_N_s_m > 0.0) {
+    viscosity_ = std::make_unique<MembraneViscosity>(rest_mesh.triangles, material.viscosity_N_s_m * pN_us_per_um_per_N_s_m);
+    viscosity_->freeze(x_um_);
+    step_proxy_ = std::make_unique<ViscousStepProxy>(h0, *viscosity_, h_us_);
+  }
+  update_woodbury();
+  stats_.factorisation_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+NpfemSolver::~NpfemSolver() = default;
+
+void NpfemSolver::update_woodbury() {
+  if (step_proxy_) {
+    step_proxy_->refresh();
+    if (!step_proxy_->ok()) throw hs::common::NumericalError("npFEM: the viscous Hessian proxy is not positive definite");
+  }
+  Eigen::Matrix2d core = Eigen::Matrix2d::Zero();
+  for (int a = 0; a < woodbury_rank_; ++a) {
+    if (step_proxy_) {
+      step_proxy_->solve(woodbury_u_[a], woodbury_z_[a]);
+    } else {
+      woodbury_z_[a] = proxy_.solve(woodbury_u_[a]);
+    }
+    core(a, a) = woodbury_core_diag_[a];
   }
   for (int a = 0; a < woodbury_rank_; ++a)
     for (int b = 0; b < woodbury_rank_; ++b) core(a, b) += dot(woodbury_u_[a], woodbury_z_[b]);
   woodbury_core_inv_ = Eigen::Matrix2d::Identity();
   if (woodbury_rank_ > 0) woodbury_core_inv_.topLeftCorner(woodbury_rank_, woodbury_rank_) =
       core.topLeftCorner(woodbury_rank_, woodbury_rank_).inverse();
-  stats_.factorisation_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-NpfemSolver::~NpfemSolver() = default;
-
 void NpfemSolver::apply_inverse_proxy(const Positions& g, Positions& out) const {
-  work_->proxy.solve(g, out);
+  if (step_proxy_) {
+    step_proxy_->solve(g, out);
+  } else {
+    work_->proxy.solve(g, out);
+  }
   if (woodbury_rank_ == 0) return;
   Eigen::Vector2d ut = Eigen::Vector2d::Zero();
   for (int a = 0; a < woodbury_rank_; ++a) ut[a] = dot(woodbury_u_[a], out);
@@ -134,7 +160,13 @@ double NpfemSolver::objective(const Positions& x, const Positions& y, Positions&
   md.noalias() = damped_mass_ * d;
   const double inv_h2 = 1.0 / (h_us_ * h_us_);
   gradient += inv_h2 * md;
-  return e + 0.5 * inv_h2 * dot(d, md);
+  if (!viscosity_) return e + 0.5 * inv_h2 * dot(d, md);
+  Workspace& w = *work_;
+  w.u.noalias() = x - w.xn;
+  w.gv.setZero();
+  const double r = viscosity_->rayleigh(w.u, w.gv);
+  gradient += w.gv / h_us_;
+  return e + 0.5 * inv_h2 * dot(d, md) + r / h_us_;
 }
 
 double NpfemSolver::max_row_norm(const Positions& g) const { return g.rowwise().norm().maxCoeff(); }
@@ -161,6 +193,11 @@ NpfemStepReport NpfemSolver::step() {
   w.rhs.noalias() = mass_fg_ * v_um_us_ + h_us_ * f_ext_pN_;
   w.damped_mass.solve(w.rhs, w.dir);
   const Positions y = xn + h_us_ * w.dir;
+  if (viscosity_) {
+    viscosity_->freeze(xn);
+    w.xn = xn;
+    update_woodbury();   // refactorises the proxy with the viscous Hessian at x_n
+  }
   Positions x, g;
   const double fx = start(xn, y, x, g);
   const NpfemStepReport report =
@@ -172,6 +209,10 @@ NpfemStepReport NpfemSolver::step() {
   w.correction[1].swap(w.correction[0]);
   w.correction[0].noalias() = x - y;
   w.corrections = std::min(w.corrections + 1, 2);
+  if (viscosity_) {
+    w.u.noalias() = x - xn;
+    stats_.viscous_dissipation_J += 2.0 * viscosity_->rayleigh(w.u, w.gv) / h_us_ / pN_um_per_J;
+  }
   Positions v = (x - xn) / h_us_;
   relax_velocity(v, x);
   x = xn + h_us_ * v;
