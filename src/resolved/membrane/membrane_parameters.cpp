@@ -45,6 +45,8 @@ NpfemSettings parse_solver(hs::common::ConfigSection& s) {
   n.gradient_tolerance = s.positive_or("gradient_tolerance", d.gradient_tolerance);
   n.line_search_halvings = static_cast<int>(s.integer_in_or("line_search_halvings", 0, 30, d.line_search_halvings));
   n.area_proxy_fraction = s.number_in_or("area_proxy_fraction", 0.01, 1.0, d.area_proxy_fraction);
+  n.viscous_proxy_refresh_steps =
+      static_cast<int>(s.integer_in_or("viscous_proxy_refresh_steps", 1, 1000, d.viscous_proxy_refresh_steps));
   return n;
 }
 

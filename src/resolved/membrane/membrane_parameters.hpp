@@ -76,6 +76,11 @@ struct NpfemSettings {
   /// over-damps the soft shear modes; 0.3 measured 40% fewer L-BFGS iterations per step on a loaded 258-vertex cell
   /// (bench npfem). It changes only the preconditioner, never the minimiser (nor the Rayleigh damping matrix).
   double area_proxy_fraction = 0.3;
+  /// With membrane viscosity: npFEM steps between refactorisations of the step proxy (ViscousStepProxy) at the
+  /// current geometry; 1 = every step. Only the preconditioner ages, the minimiser is the same. Shear Ca = 1 (first
+  /// 8 ms, 760 steps, all converged, DI equal to 7 digits): 1, 4, 8, 16 took 5.7, 3.3, 2.9, 2.9 s of CPU with 8.3,
+  /// 8.5, 9.0, 10.3 iterations per step (the elastic membrane: 1.5 s). 8 steps turn the cell by ~1 degree there.
+  int viscous_proxy_refresh_steps = 8;
 };
 
 /// Everything the [membrane] section describes: mesh, material, solver.

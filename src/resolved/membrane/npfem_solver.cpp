@@ -111,6 +111,8 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
     viscosity_ = std::make_unique<MembraneViscosity>(rest_mesh.triangles, material.viscosity_N_s_m * pN_us_per_um_per_N_s_m);
     viscosity_->freeze(x_um_);
     step_proxy_ = std::make_unique<ViscousStepProxy>(h0, *viscosity_, h_us_);
+    step_proxy_->refresh(Positions(x_um_.rowwise() - c));
+    if (!step_proxy_->ok()) throw hs::common::NumericalError("npFEM: the viscous Hessian proxy is not positive definite");
   }
   update_woodbury();
   stats_.factorisation_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -118,11 +120,14 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
 
 NpfemSolver::~NpfemSolver() = default;
 
+void NpfemSolver::refresh_step_proxy(const Positions& x) {
+  step_proxy_->refresh(x);
+  if (!step_proxy_->ok()) throw hs::common::NumericalError("npFEM: the viscous Hessian proxy is not positive definite");
+  step_proxy_age_ = 0;
+  update_woodbury();
+}
+
 void NpfemSolver::update_woodbury() {
-  if (step_proxy_) {
-    step_proxy_->refresh();
-    if (!step_proxy_->ok()) throw hs::common::NumericalError("npFEM: the viscous Hessian proxy is not positive definite");
-  }
   Eigen::Matrix2d core = Eigen::Matrix2d::Zero();
   for (int a = 0; a < woodbury_rank_; ++a) {
     if (step_proxy_) {
@@ -196,7 +201,8 @@ NpfemStepReport NpfemSolver::step() {
   if (viscosity_) {
     viscosity_->freeze(xn);
     w.xn = xn;
-    update_woodbury();   // refactorises the proxy with the viscous Hessian at x_n
+    if (step_proxy_age_ >= settings_.viscous_proxy_refresh_steps) refresh_step_proxy(xn);
+    ++step_proxy_age_;
   }
   Positions x, g;
   const double fx = start(xn, y, x, g);
@@ -349,6 +355,12 @@ std::vector<double> NpfemSolver::state() const {
     for (Eigen::Index i = 0; i < x_um_.rows(); ++i)
       for (int a = 0; a < 3; ++a) out.push_back(work_->correction[k](i, a));
   work_->history.save(out);
+  if (step_proxy_) {   // the proxy's age and geometry: a resumed run refactorises where the original did
+    out.push_back(static_cast<double>(step_proxy_age_));
+    const Positions& p = step_proxy_->frozen_at();
+    for (Eigen::Index i = 0; i < p.rows(); ++i)
+      for (int a = 0; a < 3; ++a) out.push_back(p(i, a));
+  }
   return out;
 }
 
@@ -369,6 +381,7 @@ void NpfemSolver::restore_memory(std::span<const double> memory) {
   Workspace& w = *work_;
   w.corrections = 0;
   w.history.clear();
+  if (step_proxy_) step_proxy_age_ = settings_.viscous_proxy_refresh_steps;   // refactorise at the next step
   if (memory.empty()) return;   // a state without the solver memory: start afresh
   const auto n = static_cast<std::size_t>(x_um_.rows());
   const auto corrections = static_cast<int>(memory[0]);
@@ -379,10 +392,20 @@ void NpfemSolver::restore_memory(std::span<const double> memory) {
   for (int c = 0; c < corrections; ++c)
     for (Eigen::Index i = 0; i < x_um_.rows(); ++i)
       for (int a = 0; a < 3; ++a) w.correction[c](i, a) = memory[k++];
-  if (w.history.restore(memory.subspan(k)) != memory.size() - k) {
+  k += w.history.restore(memory.subspan(k));
+  const std::size_t proxy_size = step_proxy_ ? 1 + 3 * n : 0;
+  if (memory.size() - k != proxy_size) {
     throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh or solver");
   }
   w.corrections = corrections;
+  if (step_proxy_) {
+    const auto age = static_cast<int>(memory[k++]);
+    Positions p(static_cast<Eigen::Index>(n), 3);
+    for (Eigen::Index i = 0; i < p.rows(); ++i)
+      for (int a = 0; a < 3; ++a) p(i, a) = memory[k++];
+    refresh_step_proxy(p);
+    step_proxy_age_ = age;
+  }
 }
 
 }  // namespace hs::resolved

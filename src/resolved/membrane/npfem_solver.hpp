@@ -85,7 +85,8 @@ class NpfemSolver {
   void translate_m(const hs::common::Vec3& shift_m);
 
   /// Checkpoint state (flat): positions, velocities and external forces of every vertex, the centre target, then the
-  /// solver's memory (start predictor, L-BFGS pairs) so that a resumed run repeats the uninterrupted one bit for bit.
+  /// solver's memory (start predictor, L-BFGS pairs; with viscosity the step proxy's age and geometry) so that a
+  /// resumed run repeats the uninterrupted one bit for bit.
   [[nodiscard]] std::vector<double> state() const;
   /// Restores state() of a solver built from the same mesh and settings (a state without the solver memory is
   /// accepted and starts it empty); throws std::invalid_argument on a size mismatch.
@@ -122,8 +123,10 @@ class NpfemSolver {
   LineSearchResult line_search(const Positions& x, const Positions& d, const Positions& y, double fx, double gd,
                                Positions& xt, Positions& gt);
   void apply_inverse_proxy(const Positions& g, Positions& out) const;
-  /// (Re)computes the Woodbury vectors H^-1 u and the core inverse; with viscosity it first refactorises the step proxy.
+  /// (Re)computes the Woodbury vectors H^-1 u and the core inverse (after the proxy changed).
   void update_woodbury();
+  /// With viscosity: refactorises the step proxy at x and updates the Woodbury terms.
+  void refresh_step_proxy(const Positions& x);
   /// The start of the minimisation (see the class comment); returns g(x) and writes its gradient into g.
   void restore_memory(std::span<const double> memory);
   double start(const Positions& xn, const Positions& y, Positions& x, Positions& g);
@@ -137,7 +140,8 @@ class NpfemSolver {
 
   std::unique_ptr<MembraneEnergy> energy_;
   std::unique_ptr<MembraneViscosity> viscosity_;   // null without membrane viscosity
-  std::unique_ptr<ViscousStepProxy> step_proxy_;   // with viscosity: H0 + the viscous Hessian at x_n
+  std::unique_ptr<ViscousStepProxy> step_proxy_;   // with viscosity: H0 + the viscous Hessian at a recent x_n
+  int step_proxy_age_ = 0;                         // steps since its refactorisation (checkpointed)
   NpfemSettings settings_;
   MembraneParameters material_;
   double h_us_;

@@ -17,7 +17,9 @@ ViscousStepProxy::ViscousStepProxy(const Eigen::SparseMatrix<double>& h0, const 
   sol_.resize(3 * n_);
 }
 
-void ViscousStepProxy::refresh() {
+void ViscousStepProxy::refresh(const Positions& x) {
+  frozen_at_ = x;
+  viscosity_.freeze(x);
   trip_ = base_;
   viscosity_.append_hessian(inv_h_, trip_);
   matrix_.setFromTriplets(trip_.begin(), trip_.end());

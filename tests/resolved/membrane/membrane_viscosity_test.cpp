@@ -272,3 +272,37 @@ TEST(MembraneViscosity, ReleasedCellRelaxesWithTheKelvinVoigtTime) {
   // Measured 0.9900 against 0.9901; 2e-3 allows the mode's t differing from t_c by 3 % (3e-4) and the fit-free rest.
   EXPECT_NEAR(r1.dissipated_J / r1.released_J, 1.0 / (1.0 + h / (2.0 * t_c)), 2e-3);
 }
+
+TEST(MembraneViscosity, RestoredViscousSolverContinuesBitForBit) {
+  // The state holds the step proxy's age and geometry, so a resumed run refactorises where the original did and
+  // repeats it exactly, also between refactorisations (every 3 steps here; resumed at step 7).
+  const TriangleMesh mesh = make_rbc_mesh({.vertex_count = 66});
+  MembraneParameters material;
+  material.viscosity_N_s_m = kMembraneViscosityHochmuth1979_N_s_m;
+  material.deformation_friction_Pa_s_m = 0.0;
+  material.density_kg_m3 *= 100.0;   // the shear case's mass factor
+  NpfemSettings settings;
+  settings.viscous_proxy_refresh_steps = 3;
+  std::vector<hs::common::Vec3> f(mesh.vertices_m.size());
+  f[0] = {20e-12, 5e-12, 0.0};
+  f[5] = {-20e-12, 0.0, 3e-12};
+  const double h = 10.7e-6;
+  NpfemSolver a(mesh, material, settings, h);
+  a.set_external_forces_N(f);
+  for (int s = 0; s < 7; ++s) (void)a.step();
+  NpfemSolver b(mesh, material, settings, h);
+  b.restore_state(a.state());
+  for (int s = 0; s < 10; ++s) {
+    const auto ra = a.step();
+    const auto rb = b.step();
+    EXPECT_EQ(ra.iterations, rb.iterations);
+    EXPECT_TRUE(ra.converged) << ra.stop_reason;
+  }
+  const auto xa = a.positions_m(), xb = b.positions_m();
+  for (std::size_t i = 0; i < xa.size(); ++i) {
+    EXPECT_EQ(xa[i].x, xb[i].x);
+    EXPECT_EQ(xa[i].y, xb[i].y);
+    EXPECT_EQ(xa[i].z, xb[i].z);
+  }
+  EXPECT_EQ(a.statistics().viscous_dissipation_J > 0.0, true);
+}
