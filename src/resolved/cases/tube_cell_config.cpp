@@ -64,7 +64,7 @@ double jeffery_period_s(const TubeCellConfig& c) {
 
 double membrane_relaxation_time_s(const TubeCellConfig& c) {
   const double a = 0.5 * kCellDiameterD0_m;   // as in Ca
-  return c.membrane.material.deformation_friction_Pa_s_m * a * a / c.membrane.material.shear_modulus_N_m;
+  return shape_relaxation_time_s(c.membrane.material, a);
 }
 
 TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {

@@ -21,7 +21,17 @@ MembraneParameters parse_material(hs::common::ConfigSection& s) {
   p.volume_modulus_Pa = s.positive_or("volume_modulus_Pa", d.volume_modulus_Pa);
   p.density_kg_m3 = s.positive_or("density_kg_m3", d.density_kg_m3);
   p.rayleigh_beta_s = s.non_negative_or("rayleigh_beta_s", d.rayleigh_beta_s);
-  p.deformation_friction_Pa_s_m = s.non_negative_or("deformation_friction_Pa_s_m", d.deformation_friction_Pa_s_m);
+  // The membrane's dissipation: the friction against non-rigid motion (the default, the campaign's), or the membrane
+  // viscosity (chosen by `dissipation` or by giving viscosity_N_s_m), with friction 0 unless given as well.
+  const bool viscous =
+      s.one_of_or("dissipation", {"friction", "viscosity"}, s.has("viscosity_N_s_m") ? "viscosity" : "friction") ==
+      "viscosity";
+  if (!viscous && s.has("viscosity_N_s_m")) {
+    s.fail("viscosity_N_s_m", "applies to dissipation = \"viscosity\" (remove it, or set dissipation = \"viscosity\")");
+  }
+  p.viscosity_N_s_m = viscous ? s.non_negative_or("viscosity_N_s_m", kMembraneViscosityHochmuth1979_N_s_m) : 0.0;
+  p.deformation_friction_Pa_s_m =
+      s.non_negative_or("deformation_friction_Pa_s_m", viscous ? 0.0 : d.deformation_friction_Pa_s_m);
   return p;
 }
 
@@ -35,10 +45,16 @@ NpfemSettings parse_solver(hs::common::ConfigSection& s) {
   n.gradient_tolerance = s.positive_or("gradient_tolerance", d.gradient_tolerance);
   n.line_search_halvings = static_cast<int>(s.integer_in_or("line_search_halvings", 0, 30, d.line_search_halvings));
   n.area_proxy_fraction = s.number_in_or("area_proxy_fraction", 0.01, 1.0, d.area_proxy_fraction);
+  n.viscous_proxy_refresh_steps =
+      static_cast<int>(s.integer_in_or("viscous_proxy_refresh_steps", 1, 1000, d.viscous_proxy_refresh_steps));
   return n;
 }
 
 }  // namespace
+
+double shape_relaxation_time_s(const MembraneParameters& m, double length_m) {
+  return (m.deformation_friction_Pa_s_m * length_m * length_m + m.viscosity_N_s_m) / m.shear_modulus_N_m;
+}
 
 MembraneConfig parse_membrane_config(hs::common::ConfigSection& section) {
   MembraneConfig c;

@@ -10,6 +10,12 @@
 
 namespace hs::resolved {
 
+/// RBC membrane (surface) shear viscosity: 7e-7 N s/m, the middle of the 6-8e-7 N s/m of Hochmuth, Worthy & Evans 1979
+/// (Biophys J 26:101; extensional recovery of a cell released between two pipettes, t_c = 0.10-0.13 s times their
+/// shear modulus 6 uN/m). Other measurements: ~5e-7 (Hochmuth & Hampel 1979, J Rheol 23:669), ~1e-6 (Evans &
+/// Hochmuth 1976, Biophys J 16:1); shared/reference/validation/wave2/membrane_and_cytoplasm_viscosity.csv.
+inline constexpr double kMembraneViscosityHochmuth1979_N_s_m = 7.0e-7;
+
 /// Material of the RBC membrane, SI. Every default names its source.
 struct MembraneParameters {
   /// In-plane shear modulus G_s: 2.5 uN/m, the low end of the literature range 2.5-12 uN/m (Evans 1973; Hochmuth &
@@ -44,7 +50,16 @@ struct MembraneParameters {
   /// 7.82 um Evans-Fung cell). Stated per area and time, it no longer depends on the step, the lattice spacing or the
   /// numerical mass factor (docs/resolved-coupling.md, "Membrane friction"). 0 gives a purely elastic membrane.
   double deformation_friction_Pa_s_m = 2.82e4;
+  /// Membrane shear viscosity eta_m (MembraneViscosity, Kelvin-Voigt, integrated implicitly by npFEM). 0 here: the
+  /// friction above is the dissipation of every case that does not ask for the viscosity (the campaign's). A case
+  /// with [membrane] dissipation = "viscosity" gets kMembraneViscosityHochmuth1979_N_s_m and friction 0 by default
+  /// (docs/resolved-coupling.md, "Membrane viscosity").
+  double viscosity_N_s_m = 0.0;
 };
+
+/// Kelvin-Voigt time of a shape change over the length L: (zeta_A L^2 + eta_m) / G_s (friction and viscosity in
+/// series with the shear modulus; the viscous part is Hochmuth et al. 1979's t_c = eta_m / G_s).
+[[nodiscard]] double shape_relaxation_time_s(const MembraneParameters& m, double length_m);
 
 enum class NpfemIteration { lbfgs, projective_dynamics };
 
@@ -61,6 +76,11 @@ struct NpfemSettings {
   /// over-damps the soft shear modes; 0.3 measured 40% fewer L-BFGS iterations per step on a loaded 258-vertex cell
   /// (bench npfem). It changes only the preconditioner, never the minimiser (nor the Rayleigh damping matrix).
   double area_proxy_fraction = 0.3;
+  /// With membrane viscosity: npFEM steps between refactorisations of the step proxy (ViscousStepProxy) at the
+  /// current geometry; 1 = every step. Only the preconditioner ages, the minimiser is the same. Shear Ca = 1 (first
+  /// 8 ms, 760 steps, all converged, DI equal to 7 digits): 1, 4, 8, 16 took 5.7, 3.3, 2.9, 2.9 s of CPU with 8.3,
+  /// 8.5, 9.0, 10.3 iterations per step (the elastic membrane: 1.5 s). 8 steps turn the cell by ~1 degree there.
+  int viscous_proxy_refresh_steps = 8;
 };
 
 /// Everything the [membrane] section describes: mesh, material, solver.

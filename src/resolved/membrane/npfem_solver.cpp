@@ -25,6 +25,7 @@ constexpr double us_per_s = 1e6;
 constexpr double pN_per_N = 1e12;
 constexpr double pN_um_per_J = 1e18;
 constexpr double pN_um_per_N_m = 1e6;   // N/m -> pN/um
+constexpr double pN_us_per_um_per_N_s_m = 1e12;   // N s/m -> pN us/um
 
 Positions to_positions(const std::vector<Vec3>& v, double scale) {
   Positions p(static_cast<Eigen::Index>(v.size()), 3);
@@ -97,28 +98,58 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   Positions gv, ga;
   energy_->volume_area_gradients(Positions(x_um_.rowwise() - c), gv, ga);
   const EnergyModuli& k = energy_->moduli();
-  const double coef[2] = {k.volume_modulus_pN_um2 / energy_->rest_volume(), k.global_area_pN_um / energy_->rest_area()};
+  woodbury_coef_[0] = k.volume_modulus_pN_um2 / energy_->rest_volume();
+  woodbury_coef_[1] = k.global_area_pN_um / energy_->rest_area();
   const Positions* grads[2] = {&gv, &ga};
-  Eigen::Matrix2d core = Eigen::Matrix2d::Zero();
   for (int j = 0; j < 2; ++j) {
-    if (coef[j] <= 0.0) continue;
+    if (woodbury_coef_[j] <= 0.0) continue;
     woodbury_u_[woodbury_rank_] = *grads[j];
-    woodbury_z_[woodbury_rank_] = proxy_.solve(*grads[j]);
-    core(woodbury_rank_, woodbury_rank_) = 1.0 / coef[j];
+    woodbury_core_diag_[woodbury_rank_] = 1.0 / woodbury_coef_[j];
     ++woodbury_rank_;
+  }
+  if (material.viscosity_N_s_m > 0.0) {
+    viscosity_ = std::make_unique<MembraneViscosity>(rest_mesh.triangles, material.viscosity_N_s_m * pN_us_per_um_per_N_s_m);
+    viscosity_->freeze(x_um_);
+    step_proxy_ = std::make_unique<ViscousStepProxy>(h0, *viscosity_, h_us_);
+    step_proxy_->refresh(Positions(x_um_.rowwise() - c));
+    if (!step_proxy_->ok()) throw hs::common::NumericalError("npFEM: the viscous Hessian proxy is not positive definite");
+  }
+  update_woodbury();
+  stats_.factorisation_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+NpfemSolver::~NpfemSolver() = default;
+
+void NpfemSolver::refresh_step_proxy(const Positions& x) {
+  step_proxy_->refresh(x);
+  if (!step_proxy_->ok()) throw hs::common::NumericalError("npFEM: the viscous Hessian proxy is not positive definite");
+  step_proxy_age_ = 0;
+  update_woodbury();
+}
+
+void NpfemSolver::update_woodbury() {
+  Eigen::Matrix2d core = Eigen::Matrix2d::Zero();
+  for (int a = 0; a < woodbury_rank_; ++a) {
+    if (step_proxy_) {
+      step_proxy_->solve(woodbury_u_[a], woodbury_z_[a]);
+    } else {
+      woodbury_z_[a] = proxy_.solve(woodbury_u_[a]);
+    }
+    core(a, a) = woodbury_core_diag_[a];
   }
   for (int a = 0; a < woodbury_rank_; ++a)
     for (int b = 0; b < woodbury_rank_; ++b) core(a, b) += dot(woodbury_u_[a], woodbury_z_[b]);
   woodbury_core_inv_ = Eigen::Matrix2d::Identity();
   if (woodbury_rank_ > 0) woodbury_core_inv_.topLeftCorner(woodbury_rank_, woodbury_rank_) =
       core.topLeftCorner(woodbury_rank_, woodbury_rank_).inverse();
-  stats_.factorisation_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-NpfemSolver::~NpfemSolver() = default;
-
 void NpfemSolver::apply_inverse_proxy(const Positions& g, Positions& out) const {
-  work_->proxy.solve(g, out);
+  if (step_proxy_) {
+    step_proxy_->solve(g, out);
+  } else {
+    work_->proxy.solve(g, out);
+  }
   if (woodbury_rank_ == 0) return;
   Eigen::Vector2d ut = Eigen::Vector2d::Zero();
   for (int a = 0; a < woodbury_rank_; ++a) ut[a] = dot(woodbury_u_[a], out);
@@ -134,7 +165,13 @@ double NpfemSolver::objective(const Positions& x, const Positions& y, Positions&
   md.noalias() = damped_mass_ * d;
   const double inv_h2 = 1.0 / (h_us_ * h_us_);
   gradient += inv_h2 * md;
-  return e + 0.5 * inv_h2 * dot(d, md);
+  if (!viscosity_) return e + 0.5 * inv_h2 * dot(d, md);
+  Workspace& w = *work_;
+  w.u.noalias() = x - w.xn;
+  w.gv.setZero();
+  const double r = viscosity_->rayleigh(w.u, w.gv);
+  gradient += w.gv / h_us_;
+  return e + 0.5 * inv_h2 * dot(d, md) + r / h_us_;
 }
 
 double NpfemSolver::max_row_norm(const Positions& g) const { return g.rowwise().norm().maxCoeff(); }
@@ -161,6 +198,12 @@ NpfemStepReport NpfemSolver::step() {
   w.rhs.noalias() = mass_fg_ * v_um_us_ + h_us_ * f_ext_pN_;
   w.damped_mass.solve(w.rhs, w.dir);
   const Positions y = xn + h_us_ * w.dir;
+  if (viscosity_) {
+    viscosity_->freeze(xn);
+    w.xn = xn;
+    if (step_proxy_age_ >= settings_.viscous_proxy_refresh_steps) refresh_step_proxy(xn);
+    ++step_proxy_age_;
+  }
   Positions x, g;
   const double fx = start(xn, y, x, g);
   const NpfemStepReport report =
@@ -172,6 +215,10 @@ NpfemStepReport NpfemSolver::step() {
   w.correction[1].swap(w.correction[0]);
   w.correction[0].noalias() = x - y;
   w.corrections = std::min(w.corrections + 1, 2);
+  if (viscosity_) {
+    w.u.noalias() = x - xn;
+    stats_.viscous_dissipation_J += 2.0 * viscosity_->rayleigh(w.u, w.gv) / h_us_ / pN_um_per_J;
+  }
   Positions v = (x - xn) / h_us_;
   relax_velocity(v, x);
   x = xn + h_us_ * v;
@@ -289,59 +336,6 @@ double NpfemSolver::vertex_mass_kg() const { return mass_fg_ * 1e-18; }
 double NpfemSolver::elastic_energy_J() const {
   Positions gradient;
   return energy_->evaluate(Positions(x_um_.rowwise() - x_um_.colwise().mean()), gradient) / pN_um_per_J;
-}
-
-}  // namespace hs::resolved
-
-namespace hs::resolved {
-
-std::vector<double> NpfemSolver::state() const {
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(9 * x_um_.rows() + 3));
-  for (const Positions* p : {&x_um_, &v_um_us_, &f_ext_pN_}) {
-    for (Eigen::Index i = 0; i < p->rows(); ++i)
-      for (int a = 0; a < 3; ++a) out.push_back((*p)(i, a));
-  }
-  for (int a = 0; a < 3; ++a) out.push_back(center_target_um_[a]);
-  out.push_back(static_cast<double>(work_->corrections));
-  for (int k = 0; k < work_->corrections; ++k)
-    for (Eigen::Index i = 0; i < x_um_.rows(); ++i)
-      for (int a = 0; a < 3; ++a) out.push_back(work_->correction[k](i, a));
-  work_->history.save(out);
-  return out;
-}
-
-void NpfemSolver::restore_state(std::span<const double> state) {
-  const auto n = static_cast<std::size_t>(x_um_.rows());
-  if (state.size() < 9 * n + 3) throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh");
-  std::size_t k = 0;
-  for (Positions* p : {&x_um_, &v_um_us_, &f_ext_pN_}) {
-    p->resize(static_cast<Eigen::Index>(n), 3);
-    for (Eigen::Index i = 0; i < p->rows(); ++i)
-      for (int a = 0; a < 3; ++a) (*p)(i, a) = state[k++];
-  }
-  for (int a = 0; a < 3; ++a) center_target_um_[a] = state[k++];
-  restore_memory(state.subspan(k));
-}
-
-void NpfemSolver::restore_memory(std::span<const double> memory) {
-  Workspace& w = *work_;
-  w.corrections = 0;
-  w.history.clear();
-  if (memory.empty()) return;   // a state without the solver memory: start afresh
-  const auto n = static_cast<std::size_t>(x_um_.rows());
-  const auto corrections = static_cast<int>(memory[0]);
-  if (corrections < 0 || corrections > 2 || memory.size() < 1 + 3 * n * static_cast<std::size_t>(corrections)) {
-    throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh or solver");
-  }
-  std::size_t k = 1;
-  for (int c = 0; c < corrections; ++c)
-    for (Eigen::Index i = 0; i < x_um_.rows(); ++i)
-      for (int a = 0; a < 3; ++a) w.correction[c](i, a) = memory[k++];
-  if (w.history.restore(memory.subspan(k)) != memory.size() - k) {
-    throw std::invalid_argument("NpfemSolver::restore_state: the checkpoint is of another mesh or solver");
-  }
-  w.corrections = corrections;
 }
 
 }  // namespace hs::resolved

@@ -13,6 +13,8 @@
 #include "common/vec3.hpp"
 #include "resolved/membrane/membrane_energy.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
+#include "resolved/membrane/membrane_viscosity.hpp"
+#include "resolved/membrane/viscous_step_proxy.hpp"
 #include "resolved/membrane/triangle_mesh.hpp"
 
 namespace hs::resolved {
@@ -38,6 +40,7 @@ struct NpfemStatistics {
   long iteration_cap_stops = 0;      // unconverged because max_iterations was reached
   double unconverged_gradient_sum = 0.0;   // sum over unconverged steps of max |grad g| / tolerance (mean: diagnostics)
   double factorisation_s = 0.0;  // wall time of the one-time sparse Cholesky factorisations
+  double viscous_dissipation_J = 0.0;   // energy the membrane viscosity dissipated, sum of 2 R(x - x_n) / h over steps
 };
 
 /// One membrane. Implicit Euler as the minimisation g(x) = |x - y|^2_{M~}/(2 h^2) + E(x) (reference §3.1), with
@@ -47,6 +50,10 @@ struct NpfemStatistics {
 /// is exactly Bouaziz et al. 2014's global solve after the local projections). After convergence the velocity is
 /// relaxed towards the rigid-body motion by C_alpha = zeta h / (zeta h + m), the implicit step of the vertex friction
 /// zeta = zeta_A A / n (MembraneParameters::deformation_friction_Pa_s_m; viscoelasticity, reference §3.3 step 6).
+/// A membrane viscosity (MembraneParameters::viscosity_N_s_m) adds the step's dissipation potential h R((x - x_n) / h)
+/// to g, with the triangles' geometry frozen at x_n (MembraneViscosity): quadratic in x, so the step stays a
+/// minimisation and the viscous stress is implicit (backward Euler); the proxy then also holds the viscous Hessian at
+/// x_n and is refactorised every step (ViscousStepProxy).
 /// Speed (the minimiser is unchanged): a step starts from the better of x_n and y + c, with c the corrections x* - y
 /// of the two previous steps linearly extrapolated (until two steps are done: the better of x_n and y); the L-BFGS
 /// pairs are kept from step to step (the Hessian of g changes little between steps); both are in state(), so a
@@ -78,7 +85,8 @@ class NpfemSolver {
   void translate_m(const hs::common::Vec3& shift_m);
 
   /// Checkpoint state (flat): positions, velocities and external forces of every vertex, the centre target, then the
-  /// solver's memory (start predictor, L-BFGS pairs) so that a resumed run repeats the uninterrupted one bit for bit.
+  /// solver's memory (start predictor, L-BFGS pairs; with viscosity the step proxy's age and geometry) so that a
+  /// resumed run repeats the uninterrupted one bit for bit.
   [[nodiscard]] std::vector<double> state() const;
   /// Restores state() of a solver built from the same mesh and settings (a state without the solver memory is
   /// accepted and starts it empty); throws std::invalid_argument on a size mismatch.
@@ -115,6 +123,10 @@ class NpfemSolver {
   LineSearchResult line_search(const Positions& x, const Positions& d, const Positions& y, double fx, double gd,
                                Positions& xt, Positions& gt);
   void apply_inverse_proxy(const Positions& g, Positions& out) const;
+  /// (Re)computes the Woodbury vectors H^-1 u and the core inverse (after the proxy changed).
+  void update_woodbury();
+  /// With viscosity: refactorises the step proxy at x and updates the Woodbury terms.
+  void refresh_step_proxy(const Positions& x);
   /// The start of the minimisation (see the class comment); returns g(x) and writes its gradient into g.
   void restore_memory(std::span<const double> memory);
   double start(const Positions& xn, const Positions& y, Positions& x, Positions& g);
@@ -127,6 +139,9 @@ class NpfemSolver {
   [[nodiscard]] double max_row_norm(const Positions& g) const;
 
   std::unique_ptr<MembraneEnergy> energy_;
+  std::unique_ptr<MembraneViscosity> viscosity_;   // null without membrane viscosity
+  std::unique_ptr<ViscousStepProxy> step_proxy_;   // with viscosity: H0 + the viscous Hessian at a recent x_n
+  int step_proxy_age_ = 0;                         // steps since its refactorisation (checkpointed)
   NpfemSettings settings_;
   MembraneParameters material_;
   double h_us_;
@@ -139,6 +154,8 @@ class NpfemSolver {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> damped_mass_solver_;
   Positions woodbury_u_[2];                     // rest gradients of V and A (rank-2 global proxy)
   Positions woodbury_z_[2];                     // H0^-1 u
+  double woodbury_coef_[2] = {0.0, 0.0};        // k_V / V0, k_A / A0
+  double woodbury_core_diag_[2] = {0.0, 0.0};   // 1 / coef of the active terms
   Eigen::Matrix2d woodbury_core_inv_;
   int woodbury_rank_ = 0;
   Positions x_um_;

@@ -81,3 +81,31 @@ TEST(BadMembraneConfig, NonPositiveModuliNameTheKey) {
   EXPECT_NE(config_error("[membrane]\nshear_modulus = 5e-6\n").find("shear_modulus"), std::string::npos);   // typo
   EXPECT_EQ(config_error("[membrane]\nshear_modulus_N_m = 4e-6\nvertices = 642\n"), "");
 }
+
+TEST(MembraneDissipation, FrictionByDefaultViscosityWhenAskedFor) {
+  auto parse = [](const std::string& toml) {
+    auto f = hs::common::ConfigFile::parse(toml, "case.toml");
+    auto s = f->root().section_or_empty("membrane");
+    const MembraneConfig c = parse_membrane_config(s);
+    f->finish();
+    return c.material;
+  };
+  // Without either key: the friction of the campaign, no viscosity (earlier runs unchanged).
+  const MembraneParameters legacy = parse("[membrane]\n");
+  EXPECT_EQ(legacy.deformation_friction_Pa_s_m, MembraneParameters{}.deformation_friction_Pa_s_m);
+  EXPECT_EQ(legacy.viscosity_N_s_m, 0.0);
+  // dissipation = "viscosity": Hochmuth et al. 1979's eta_m, friction 0; giving the value alone implies it.
+  const MembraneParameters viscous = parse("[membrane]\ndissipation = \"viscosity\"\n");
+  EXPECT_EQ(viscous.viscosity_N_s_m, kMembraneViscosityHochmuth1979_N_s_m);
+  EXPECT_EQ(viscous.deformation_friction_Pa_s_m, 0.0);
+  const MembraneParameters given = parse("[membrane]\nviscosity_N_s_m = 5e-7\n");
+  EXPECT_EQ(given.viscosity_N_s_m, 5e-7);
+  EXPECT_EQ(given.deformation_friction_Pa_s_m, 0.0);
+  const MembraneParameters both = parse("[membrane]\nviscosity_N_s_m = 5e-7\ndeformation_friction_Pa_s_m = 1e3\n");
+  EXPECT_EQ(both.deformation_friction_Pa_s_m, 1e3);
+  // Contradictions and bad values name the key.
+  EXPECT_NE(config_error("[membrane]\ndissipation = \"friction\"\nviscosity_N_s_m = 7e-7\n").find("viscosity_N_s_m"),
+            std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nviscosity_N_s_m = -1e-7\n").find("viscosity_N_s_m"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\ndissipation = \"viscous\"\n").find("dissipation"), std::string::npos);
+}
