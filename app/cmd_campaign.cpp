@@ -19,6 +19,7 @@ struct CampaignArgs {
   bool status = false;
   bool retry_failed = false;
   bool reopen_done = false;
+  bool quiet = false;
   int max_runs = -1;
 };
 
@@ -37,7 +38,7 @@ int run_campaign(const CampaignArgs& args) {
   hs::campaign::CampaignRunner runner(spec, {.executable = std::filesystem::read_symlink("/proc/self/exe"),
                                              .retry_failed = args.retry_failed,
                                              .reopen_done = args.reopen_done,
-                                             .show_progress = true,   // a line on a terminal, dated lines in a log
+                                             .show_progress = !args.quiet,   // a line on a terminal, dated lines in a log
                                              .max_runs = args.max_runs});
   if (args.status) {
     std::fputs(runner.status_table().c_str(), stdout);
@@ -62,6 +63,7 @@ void add_campaign_command(CLI::App& cli, Action& action) {
   cmd->add_flag("--reopen-done", args->reopen_done,
                 "run finished runs again, from their last checkpoint where they have one (after a stricter stopping rule)");
   cmd->add_option("--max-runs", args->max_runs, "start at most this many runs in this invocation");
+  cmd->add_flag("--quiet,-q", args->quiet, "no progress line and no per-run lines on stderr (the status table still prints)");
   cmd->callback([&action, args] { action = [args] { return run_campaign(*args); }; });
 }
 

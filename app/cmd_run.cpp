@@ -68,6 +68,9 @@ void add_run_command(CLI::App& cli, Action& action) {
   cmd->add_flag("--resume", args->resume, "continue the run in --output from its last checkpoint");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress line");
   cmd->add_flag("--quick", args->quick, "coarse, short version of the case (for CI)");
+  std::string types = "Case types ([case] type in case.toml):";
+  for (const auto& [name, entry] : case_types()) types += fmt::format("\n  {:<16}{}", name, entry.help);
+  cmd->footer(types);
   cmd->callback([&action, args] { action = [args] { return run_case(*args); }; });
 }
 

@@ -1,27 +1,25 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Plots of the single-RBC plate cases from their run folders (timeseries.csv + summary.json).
+"""Plots of the single-RBC plate cases from their run folders (timeseries.csv or .csv.gz, summary.json).
 Usage: /usr/bin/python3 tools/plot_cell_flow.py shear RUN_DIR [-o shear.png]
          DI and inclination vs time (tumbling half turns and the Jeffery period in the title).
        /usr/bin/python3 tools/plot_cell_flow.py migration RUN_DIR [RUN_DIR ...] [-o migration.png]
          lateral position y/H vs time, one line per run (Re from its summary)."""
 import argparse
-import csv
 import json
 import math
 import os
 
 import matplotlib
 
+import hs_tables
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
 def read_series(run_dir):
-    with open(os.path.join(run_dir, "timeseries.csv")) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#")) if r]
-    header = rows[0]
-    return {name: [float(r[i]) for r in rows[1:]] for i, name in enumerate(header)}
+    return hs_tables.read_columns(hs_tables.run_file(run_dir))
 
 
 def read_results(run_dir):

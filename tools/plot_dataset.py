@@ -1,30 +1,27 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# DI, Cd and Cl of the resolved dataset against their inputs (the seed paper's Fig. 11 style): DI vs gamma+ coloured
-# by u_r+, Cd and Cl vs Re_p coloured by DI. Usage: /usr/bin/python3 tools/plot_dataset.py data/resolved/dataset.csv OUT.png
-import csv
+"""DI, Cd and Cl of the resolved dataset against their inputs (the seed paper's Fig. 11 style): DI vs gamma+ coloured
+by u_r+, Cd and Cl vs Re_p coloured by DI. The dataset may be a .csv or a .csv.gz.
+Usage: /usr/bin/python3 tools/plot_dataset.py data/resolved/dataset.csv [OUT.png]"""
+import argparse
 import math
-import sys
 
 import matplotlib
+
+import hs_tables
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def number(text):
-    try:
-        value = float(text)
-    except ValueError:
-        return math.nan
-    return value
-
-
 def main():
-    with open(sys.argv[1], newline="") as f:
-        rows = [r for r in csv.DictReader(f)]
-    out = sys.argv[2] if len(sys.argv) > 2 else "dataset.png"
-    col = {k: [number(r[k]) for r in rows] for k in ("gamma_plus", "u_r_plus", "re_p", "di", "cd", "cl")}
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("dataset", help="dataset.csv (or .csv.gz) of a campaign")
+    p.add_argument("out", nargs="?", default="dataset.png", help="PNG to write (default dataset.png)")
+    a = p.parse_args()
+    rows = hs_tables.read_rows(a.dataset)
+    out = a.out
+    col = {k: [hs_tables.number(r[k]) for r in rows] for k in ("gamma_plus", "u_r_plus", "re_p", "di", "cd", "cl")}
     fig, axes = plt.subplots(1, 3, figsize=(13, 4))
     panels = ((axes[0], "gamma_plus", "di", "u_r_plus", "gamma+", "DI", "u_r+"),
               (axes[1], "re_p", "cd", "di", "Re_p", "C_d", "DI"),

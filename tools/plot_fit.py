@@ -1,23 +1,22 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """Report of a `hemoscale fit` run folder: data vs model, residuals, Pareto front -> report.png.
-Usage: /usr/bin/python3 tools/plot_fit.py RUN_DIR"""
-import csv
+predictions.csv and pareto.csv may also be archived as .csv.gz.
+Usage: /usr/bin/python3 tools/plot_fit.py RUN_DIR [-o OUT.png]   (default RUN_DIR/report.png)"""
+import argparse
 import glob
 import os
-import sys
 
 import matplotlib
+
+import hs_tables
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
 def read_csv(path):
-    with open(path) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
-    header, body = rows[0], [[float(x) for x in r] for r in rows[1:] if r]
-    return header, body
+    return hs_tables.read_matrix(hs_tables.locate(path))
 
 
 def closure_text(run_dir):
@@ -32,7 +31,11 @@ def closure_text(run_dir):
 
 
 def main():
-    run_dir = sys.argv[1]
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("run_dir", help="folder of a `hemoscale fit` run (predictions.csv, pareto.csv, the closure .toml)")
+    p.add_argument("-o", "--output", help="PNG to write (default RUN_DIR/report.png)")
+    a = p.parse_args()
+    run_dir = a.run_dir
     header, rows = read_csv(os.path.join(run_dir, "predictions.csv"))
     target = header[1]
     test = [r for r in rows if r[0] > 0.5]
@@ -57,7 +60,7 @@ def main():
     ax[2].legend()
     fig.suptitle(f"{output} = {expression}" if len(expression) < 120 else f"{output} = {expression[:117]}...", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(run_dir, "report.png"), dpi=110)
+    fig.savefig(a.output or os.path.join(run_dir, "report.png"), dpi=110)
 
 
 if __name__ == "__main__":

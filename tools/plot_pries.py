@@ -1,16 +1,19 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# Plots `hemoscale validate pries` (pries_validation.csv): Ht_d/Ht_c and mu_rel vs diameter, simulation vs Pries 1992.
-import csv
-import sys
+"""Plots `hemoscale validate pries` (pries_validation.csv or .csv.gz): Ht_d/Ht_c and mu_rel vs diameter, simulation
+vs Pries 1992. Usage: /usr/bin/python3 tools/plot_pries.py pries_validation.csv OUT.png"""
+import argparse
 
 import matplotlib
+
+import hs_tables
+
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
 
 
 def main(csv_path, png_path):
-    rows = list(csv.DictReader(open(csv_path)))
+    rows = hs_tables.read_rows(csv_path)
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ht in sorted({r["tube_hematocrit_requested"] for r in rows}, key=float):
         sel = sorted((r for r in rows if r["tube_hematocrit_requested"] == ht), key=lambda r: float(r["diameter_um"]))
@@ -36,4 +39,8 @@ def main(csv_path, png_path):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("csv", help="pries_validation.csv (or .csv.gz) of `hemoscale validate pries`")
+    p.add_argument("png", help="PNG to write")
+    a = p.parse_args()
+    main(a.csv, a.png)

@@ -1,15 +1,16 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# Overlays the time series of several tube-cell runs of one case at different resolutions (the dx = 1 vs 0.5 um check):
-# Cd of the drag runs, DI, the lift force and the axial velocity of the lift runs.
-# Usage: /usr/bin/python3 tools/plot_resolution.py OUT.png LABEL=RUN_DIR [LABEL=RUN_DIR ...]
-import csv
+"""Overlays the time series of several tube-cell runs of one case at different resolutions (the dx = 1 vs 0.5 um
+check): Cd of the drag runs, DI, the lift force and the axial velocity of the lift runs. A run's timeseries may be
+archived (.csv.gz). Usage: /usr/bin/python3 tools/plot_resolution.py OUT.png LABEL=RUN_DIR [LABEL=RUN_DIR ...]"""
+import argparse
 import json
 import os
 import re
-import sys
 
 import matplotlib
+
+import hs_tables
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -19,8 +20,7 @@ PANELS = (("cd", "C_d (drag runs)", "drag"), ("di", "DI", None), ("lift_N", "lif
 
 
 def read_run(run_dir):
-    with open(os.path.join(run_dir, "timeseries.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = hs_tables.read_rows(hs_tables.run_file(run_dir))
     setup = ""
     summary_path = os.path.join(run_dir, "summary.json")
     if os.path.exists(summary_path):   # a run still going has no summary yet: its setup is in its resolved case
@@ -33,12 +33,16 @@ def read_run(run_dir):
 
 
 def main():
-    if len(sys.argv) < 3 or any("=" not in a for a in sys.argv[2:]):
-        sys.exit("usage: plot_resolution.py OUT.png LABEL=RUN_DIR [LABEL=RUN_DIR ...]")
-    out = sys.argv[1]
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("out", help="PNG to write")
+    p.add_argument("runs", nargs="+", metavar="LABEL=RUN_DIR", help="a run folder and its label in the legend")
+    a = p.parse_args()
+    if any("=" not in r for r in a.runs):
+        p.error("each run is given as LABEL=RUN_DIR")
+    out = a.out
     fig, axes = plt.subplots(len(PANELS), 1, figsize=(7.5, 9), sharex=True)
     colours = {}
-    for arg in sys.argv[2:]:
+    for arg in a.runs:
         label, run_dir = arg.split("=", 1)
         colour = colours.setdefault(label, f"C{len(colours)}")   # one colour per resolution, one line style per set-up
         rows, setup = read_run(run_dir)

@@ -1,17 +1,19 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# D_x, D_y, D_z (= L_i / 7.82 um) of one stenosis run vs time and vs the centroid's distance from the throat, with
-# the constriction shaded and the wall height h(x) drawn (the seed paper's figure 7).
-# Usage: /usr/bin/python3 tools/plot_stenosis.py RUN_DIR [OUT.png]   (RUN_DIR holds timeseries.csv, summary.json)
-#        /usr/bin/python3 tools/plot_stenosis.py RUN_DIR RUN_DIR... OUT.png   (runs overlaid vs centroid x, e.g. two
-#        repulsion settings; each labelled with its folder name)
-import csv
+"""D_x, D_y, D_z (= L_i / 7.82 um) of one stenosis run vs time and vs the centroid's distance from the throat, with
+the constriction shaded and the wall height h(x) drawn (the seed paper's figure 7).
+Usage: /usr/bin/python3 tools/plot_stenosis.py RUN_DIR [OUT.png]   (RUN_DIR holds timeseries.csv or .csv.gz and
+         summary.json)
+       /usr/bin/python3 tools/plot_stenosis.py RUN_DIR RUN_DIR... OUT.png   (runs overlaid vs centroid x, e.g. two
+         repulsion settings; each labelled with its folder name)"""
+import argparse
 import json
 import math
 import os
-import sys
 
 import matplotlib
+
+import hs_tables
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -25,8 +27,7 @@ def wall_height(s, big_h, throat, length):
 
 
 def load(run):
-    with open(os.path.join(run, "timeseries.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = hs_tables.read_rows(hs_tables.run_file(run))
     with open(os.path.join(run, "summary.json")) as f:
         summary = json.load(f)
     return rows, summary["results"]
@@ -57,13 +58,15 @@ def compare(runs, out):
 
 
 def main():
-    if len(sys.argv) > 3:
-        compare(sys.argv[1:-1], sys.argv[-1])
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("paths", nargs="+", metavar="RUN_DIR [OUT.png]", help="one run [and the PNG], or runs then the PNG")
+    a = p.parse_args()
+    if len(a.paths) > 2:
+        compare(a.paths[:-1], a.paths[-1])
         return
-    run = sys.argv[1]
-    out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(run, "stenosis_d.png")
-    with open(os.path.join(run, "timeseries.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    run = a.paths[0]
+    out = a.paths[1] if len(a.paths) > 1 else os.path.join(run, "stenosis_d.png")
+    rows = hs_tables.read_rows(hs_tables.run_file(run))
     with open(os.path.join(run, "summary.json")) as f:
         summary = json.load(f)
     res = summary["results"]

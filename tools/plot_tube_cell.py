@@ -1,24 +1,29 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# Cd (drag run) or Cl (lift run) and DI vs time of one tube-cell run, with the averaging window's periods and the end
-# of the membrane transient marked (the seed paper's Fig. 10). A lift run's Cd divides by its near-zero slip: not shown.
-# Usage: /usr/bin/python3 tools/plot_tube_cell.py RUN_DIR [OUT.png]   (RUN_DIR holds timeseries.csv, summary.json)
-import csv
+"""Cd (drag run) or Cl (lift run) and DI vs time of one tube-cell run, with the averaging window's periods and the end
+of the membrane transient marked (the seed paper's Fig. 10). A lift run's Cd divides by its near-zero slip: not shown.
+Usage: /usr/bin/python3 tools/plot_tube_cell.py RUN_DIR [OUT.png]   (RUN_DIR holds summary.json and timeseries.csv,
+       or timeseries.csv.gz as in the campaign archive data/resolved/runs/)"""
+import argparse
 import json
 import os
-import sys
 
 import matplotlib
+
+import hs_tables
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
 def main():
-    run = sys.argv[1]
-    out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(run, "cd_di.png")
-    with open(os.path.join(run, "timeseries.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("run", help="run folder of a tube-cell case")
+    p.add_argument("out", nargs="?", help="PNG to write (default RUN_DIR/cd_di.png)")
+    a = p.parse_args()
+    run = a.run
+    out = a.out or os.path.join(run, "cd_di.png")
+    rows = hs_tables.read_rows(hs_tables.run_file(run))
     with open(os.path.join(run, "summary.json")) as f:
         summary = json.load(f)
     res = summary["results"]

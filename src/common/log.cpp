@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Run log: messages go to stderr (rank 0 only) and to the run folder's log.txt.
+// Run log: diagnostics go to stderr, result lines to stdout (rank 0 only), and both to the run folder's log.txt.
 #include "common/log.hpp"
 
 #include <chrono>
@@ -47,6 +47,16 @@ void Log::write(Level level, const std::string& message) {
   }
   if (file_.is_open()) {
     file_ << local_timestamp() << ' ' << prefix_ << tag(level) << ": " << message << '\n';
+    file_.flush();
+  }
+}
+
+void Log::write_result(const std::string& message) {
+  if (rank_ != 0) return;
+  std::fprintf(stdout, "%s%s\n", prefix_.c_str(), message.c_str());
+  std::fflush(stdout);   // in order with the diagnostics when both go to one terminal or file
+  if (file_.is_open()) {
+    file_ << local_timestamp() << ' ' << prefix_ << "result: " << message << '\n';
     file_.flush();
   }
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Run log: messages go to stderr (rank 0 only) and to the run folder's log.txt.
+// Run log: diagnostics go to stderr, result lines to stdout (rank 0 only), and both to the run folder's log.txt.
 #pragma once
 
 #include <filesystem>
@@ -40,12 +40,20 @@ class Log {
   void error(fmt::format_string<Args...> f, Args&&... args) {
     write(Level::error, fmt::format(f, std::forward<Args>(args)...));
   }
+  /// A result line, the numbers the run was made for: on stdout (so `hemoscale run CASE > results.txt` keeps them apart
+  /// from the diagnostics on stderr), also with --quiet, with the prefix ("[--quick] "), and in log.txt as "result:".
+  template <typename... Args>
+  void result(fmt::format_string<Args...> f, Args&&... args) {
+    write_result(fmt::format(f, std::forward<Args>(args)...));
+  }
   template <typename... Args>
   void debug(fmt::format_string<Args...> f, Args&&... args) {
     write(Level::debug, fmt::format(f, std::forward<Args>(args)...));
   }
 
  private:
+  void write_result(const std::string& message);
+
   int rank_;
   Level threshold_;
   bool quiet_ = false;

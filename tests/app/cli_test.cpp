@@ -98,3 +98,36 @@ TEST(Cli, CampaignTakesTheFolderOrItsToml) {
   EXPECT_EQ(other.code, 2) << other.output;
   EXPECT_NE(other.output.find("give the campaign folder or its campaign.toml"), std::string::npos) << other.output;
 }
+
+TEST(Cli, RunHelpListsEveryCaseTypeWithItsLine) {
+  const auto r = run("run --help");
+  EXPECT_EQ(r.code, 0) << r.output;
+  for (const char* type : {"tube-poiseuille", "stretching", "tube-plasma", "tube-cell", "tube-pries", "shear", "migration",
+                           "stenosis"}) {
+    EXPECT_NE(r.output.find(std::string("\n  ") + type + " "), std::string::npos) << type << " not listed:\n" << r.output;
+  }
+  EXPECT_NE(r.output.find("plasma in a periodic tube, checked against Poiseuille"), std::string::npos) << r.output;
+}
+
+TEST(Cli, CampaignTakesQuiet) {
+  const fs::path dir = fs::path(HS_SOURCE_DIR) / "cases/campaign/tube-re-rstar";
+  const auto quiet = run("campaign " + dir.string() + " --status --quiet");
+  EXPECT_EQ(quiet.code, 0) << quiet.output;
+  EXPECT_EQ(quiet.output, run("campaign " + dir.string() + " --status").output);   // --status prints the table either way
+  EXPECT_NE(run("campaign --help").output.find("--quiet"), std::string::npos);
+}
+
+TEST(Cli, ResultsOnStdoutDiagnosticsOnStderr) {
+  const fs::path out = fs::temp_directory_path() / "hs_cli_streams";
+  fs::remove_all(out);
+  const std::string run_case = std::string(HS_BIN) + " run " + HS_SOURCE_DIR + "/cases/resolved/tube-poiseuille --quick --output ";
+  const auto stdout_only = hs::test::run_shell("sh -c '" + run_case + out.string() + "/a 2>/dev/null'");
+  EXPECT_EQ(stdout_only.code, 0) << stdout_only.output;
+  EXPECT_NE(stdout_only.output.find("[--quick] Poiseuille check: u_max"), std::string::npos) << stdout_only.output;
+  EXPECT_EQ(stdout_only.output.find("running tube-poiseuille"), std::string::npos) << stdout_only.output;
+  const auto stderr_only = hs::test::run_shell("sh -c '" + run_case + out.string() + "/b >/dev/null'");
+  EXPECT_EQ(stderr_only.code, 0) << stderr_only.output;
+  EXPECT_NE(stderr_only.output.find("running tube-poiseuille"), std::string::npos) << stderr_only.output;
+  EXPECT_EQ(stderr_only.output.find("Poiseuille check"), std::string::npos) << stderr_only.output;
+  fs::remove_all(out);
+}

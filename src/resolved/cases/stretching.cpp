@@ -87,11 +87,11 @@ int run_stretching(const hs::common::CaseRequest& request) {
     time_s += p.steps * c.setup.time_step_s;
     const bool inside = b.axial_inside(p.axial_m) && b.transverse_inside(p.transverse_m);
     all_good = all_good && inside && p.steady;
-    log.info("F = {:6.1f} pN: axial {:.3f} um [{:.2f}, {:.2f}], transverse {:.3f} um [{:.2f}, {:.2f}] {}; dA/A {:.1e}, "
-             "dV/V {:.1e}; {} steps, {} L-BFGS iterations, {} steps unconverged{}",
-             b.force_N * 1e12, p.axial_m * 1e6, b.axial_lower_m * 1e6, b.axial_upper_m * 1e6, p.transverse_m * 1e6,
-             b.transverse_lower_m * 1e6, b.transverse_upper_m * 1e6, inside ? "inside" : "OUTSIDE", p.area_change,
-             p.volume_change, p.steps, p.iterations, p.unconverged_steps, p.steady ? "" : " (NOT steady)");
+    log.result("F = {:6.1f} pN: axial {:.3f} um [{:.2f}, {:.2f}], transverse {:.3f} um [{:.2f}, {:.2f}] {}; dA/A {:.1e}, "
+               "dV/V {:.1e}; {} steps, {} L-BFGS iterations, {} steps unconverged{}",
+               b.force_N * 1e12, p.axial_m * 1e6, b.axial_lower_m * 1e6, b.axial_upper_m * 1e6, p.transverse_m * 1e6,
+               b.transverse_lower_m * 1e6, b.transverse_upper_m * 1e6, inside ? "inside" : "OUTSIDE", p.area_change,
+               p.volume_change, p.steps, p.iterations, p.unconverged_steps, p.steady ? "" : " (NOT steady)");
     csv.row({b.force_N, p.axial_m, p.transverse_m, b.axial_lower_m, b.axial_upper_m, b.transverse_lower_m,
              b.transverse_upper_m, inside ? 1.0 : 0.0, p.area_change, p.volume_change, static_cast<double>(p.steps),
              static_cast<double>(p.iterations)});
@@ -109,8 +109,8 @@ int run_stretching(const hs::common::CaseRequest& request) {
                             {"reference", c.reference_csv.string()}};
   ctx.write_summary(summary);
   plot(run, c.reference_csv, log);
-  log.info("stretching: {} -> {}", all_good ? "all levels inside the Mills band" : "some levels OUTSIDE the band",
-           run.path().string());
+  log.result("stretching: {} -> {}", all_good ? "all levels inside the Mills band" : "some levels OUTSIDE the band",
+             run.path().string());
   return all_good ? 0 : 1;
 }
 

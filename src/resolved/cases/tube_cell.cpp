@@ -108,6 +108,16 @@ TubeCellSample sample_state(const TubeCellRun& r, double time_s, const Vec3& for
   return s;
 }
 
+/// The run's result line on stdout: the period (or plain) averages of C_d, C_l and DI that its summary.json holds.
+void print_result(common::Log& log, const nlohmann::json& results, bool drag, bool settled) {
+  auto number = [&results](const char* key) {
+    return results.contains(key) && results[key].is_number() ? results[key].get<double>() : std::nan("");
+  };
+  log.result("tube-cell ({}): C_d {:.6g}, C_l {:.6g}, DI {:.4f}, averaged over {} periods; {}", drag ? "drag" : "lift",
+             number("cd_mean"), number("cl_mean"), number("di_mean"), number("periods_averaged"),
+             settled ? "settled" : "NOT settled (stopped at max_time_s)");
+}
+
 }  // namespace
 
 int run_tube_cell(const common::CaseRequest& request) {
@@ -196,6 +206,7 @@ int run_tube_cell(const common::CaseRequest& request) {
   summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
   summary["membrane_solve"] = membrane_solve_summary(r.membrane->statistics());
   ctx.write_summary(summary);
+  print_result(ctx.log(), summary["results"], c.setup == TubeCellSetup::drag, settled);
   return settled ? 0 : 1;
 }
 

@@ -132,10 +132,10 @@ int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, co
   const double err_u = std::abs(u_max - c.u_max_m_s) / c.u_max_m_s;
   const double err_q = std::abs(q - q_exact) / q_exact;
   const bool passed = out.converged && err_u < kUMaxTolerance && err_q < kFlowRateTolerance;
-  log.info("Poiseuille check: u_max = {:.6g} m/s (analytic {:.6g}, error {:.3f} %), flow rate = {:.6g} m3/s "
-           "(analytic {:.6g}, error {:.3f} %), {} after {} steps: {}",
-           u_max, c.u_max_m_s, 100.0 * err_u, q, q_exact, 100.0 * err_q,
-           out.converged ? "steady" : "NOT converged", out.steps, passed ? "PASSED" : "FAILED");
+  log.result("Poiseuille check: u_max = {:.6g} m/s (analytic {:.6g}, error {:.3f} %), flow rate = {:.6g} m3/s "
+             "(analytic {:.6g}, error {:.3f} %), {} after {} steps: {}",
+             u_max, c.u_max_m_s, 100.0 * err_u, q, q_exact, 100.0 * err_q,
+             out.converged ? "steady" : "NOT converged", out.steps, passed ? "PASSED" : "FAILED");
   nlohmann::json s;
   s["reynolds"] = c.reynolds;
   s["lattice_mach"] = c.lattice_mach;
