@@ -53,7 +53,9 @@ TEST(TubeCellCli, QuickDragRunWritesSeriesAndGroups) {
   const auto dir = write_variant("quick", "max_jeffery_periods = 6 ", "max_time_s = 0.001 ");
   const auto out = dir / "out";
   const Result r = run("run --quiet --quick " + dir.string() + " --output " + out.string());
-  EXPECT_EQ(r.code, 1) << r.output;   // 1 = ran but did not settle (capped), as intended here
+  // --quick is too short to settle: the settling check is skipped and said so, exit 0 (docs/outputs.md, one rule).
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("skipped"), std::string::npos) << r.output;
   const auto csv = hs::common::read_csv(out / "timeseries.csv");
   const auto drag = csv.column("drag_N");
   ASSERT_GE(drag.size(), 4u);
