@@ -2,6 +2,7 @@
 // The unresolved case skeleton: solvers from the setup, the staged loop, rows, checkpoints and signals.
 #include "unresolved/cases/cfd_dem_case.hpp"
 
+#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -66,8 +67,10 @@ CfdDemSolvers::CfdDemSolvers(CfdDemSetup setup)
 CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDemLoopOptions& options) {
   const CfdDemRestart& restart = options.restart;
   CfdDemCoupling& coupling = run.coupling();
-  m.prepare(run);
   CfdDemOutcome out;
+  const auto t0 = std::chrono::steady_clock::now();
+  m.prepare(run);
+  out.prepare_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   long rows_shown = 0;
   const auto show = [&](const std::vector<double>& row) {
     if (options.on_row) options.on_row(row);
@@ -109,6 +112,7 @@ CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDem
   for (const auto& g : groups.items()) out.summary["groups"][g.key()] = g.value();
   out.summary["cfd_steps"] = static_cast<long>(out.rows.size());
   out.summary["stage_timings"] = loop.timings();
+  out.summary["prepare_seconds"] = out.prepare_seconds;
   out.timing_table = loop.timing_table();
   return out;
 }

@@ -106,6 +106,7 @@ struct CfdDemOutcome {
   std::vector<std::vector<double>> rows;   // the whole series, saved rows included
   nlohmann::json summary;                  // the measurement's, with the skeleton's groups and stage timings
   std::string timing_table;                // wall seconds per stage, for the log
+  double prepare_seconds = 0.0;            // the measurement's prepare() (e.g. a plasma-only reference run)
 };
 
 /// Runs `m` on `run` up to options.steps: prepare, then start (fresh) or the checkpoint (resume), the stages

@@ -29,7 +29,8 @@ CfdDemOutcome run_cfd_dem_in_folder(hs::common::RunContext& ctx, CfdDemSolvers& 
        .after_step = [&](const CfdDemSolvers& s, long step, bool last) { frames.after_step(s.fluid(), s.dem(), step, last); },
        .progress = &progress});
   progress.finish();
-  ctx.log().info("{}: wall seconds per stage of the CFD-DEM step\n{}", m.case_type(), out.timing_table);
+  ctx.log().info("{}: {:.3f} s before the loop (the case's prepare), wall seconds per stage of the CFD-DEM step:\n{}",
+                 m.case_type(), out.prepare_seconds, out.timing_table);
   return out;
 }
 

@@ -116,7 +116,7 @@ std::vector<double> TubeOpenMeasurement::sample(const CfdDemSolvers& run) {
     const double net_in = n.rbc_volume_in_m3 - n.rbc_volume_out_m3;
     const double sign = along_flow(openings_[k]);
     row.insert(row.end(), {static_cast<double>(n.cells_in), static_cast<double>(n.cells_out),
-                           -sign * (net_in - last_net_volume_m3_[k]) / dt,
+                           0.0 - sign * (net_in - last_net_volume_m3_[k]) / dt,   // 0 - x: +0, never -0, in the csv
                            sign * opening_outward_flux_m3_s(run.fluid(), openings_[k])});
   }
   remember_volumes();
