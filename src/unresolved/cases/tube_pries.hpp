@@ -81,7 +81,7 @@ struct TubePriesRestart {
 
 class CfdDemFrames;
 
-/// Runs the plasma-only reference and the coupled tube; throws ConfigError for inputs found bad on the way
+/// Runs the plasma-only reference and the coupled tube on the CFD-DEM skeleton (tube_pries_measurement.cpp); throws ConfigError for inputs found bad on the way
 /// (insertion impossible, particles outside the tube, DEM step, a checkpoint of another case). With restart.dir a
 /// checkpoint is written every c.checkpoint_every_wall_s and at the end; with restart.resume the run continues
 /// from it up to c.end_time_s (which may be later than the saved run's): the samples before the checkpoint are
