@@ -19,7 +19,8 @@
 #include "common/io/csv_writer.hpp"
 #include "common/run_folder.hpp"
 #include "unresolved/cases/tube_pries.hpp"
-#include "unresolved/cases/tube_pries_checks.hpp"
+#include "validate/tube_pries_checks.hpp"
+#include "validate/tube_pries_comparison.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 
@@ -125,7 +126,8 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
     for (const double ht : {0.05, 0.10, 0.15}) {
       TubePriesConfig c = config_for(d_um, ht, options.quick, closures, viscosity);
       c.wall_correction = wall;
-      const TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
+      TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
+      add_pries_comparison(c, r);
       const double err = std::max(std::abs(r.ht_d_error_pct), std::abs(r.mu_rel_error_pct));
       max_error = std::max(max_error, err);
       check_tube_pries(c, r, {.quick = options.quick, .tighten = options.tighten}, checks);

@@ -53,12 +53,8 @@ LINK_RULES += [(lib, gp, "unresolved never links the GP engine") for lib in UNRE
                for gp in ("hs_regression", "hs_closures_fit")]
 
 # Known violations, each with its reason. One that is no longer needed is an error too, so the list only shrinks.
-INCLUDE_EXCEPTIONS = {
-    ("unresolved/cases/tube_pries.cpp", "analysis/pries1992.hpp"):
-        "the case writes its Pries 1992 comparison into summary.json; it moves to analysis/ when tube-pries is "
-        "ported onto the unresolved case skeleton (issue 21, deliverable 1)",
-}
-LINK_EXCEPTIONS = {("hs_unresolved_cases", "hs_analysis"): "the same tube-pries comparison"}
+INCLUDE_EXCEPTIONS = {}
+LINK_EXCEPTIONS = {}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.MULTILINE)
 

@@ -12,6 +12,7 @@
 #include "closures/closure_registry.hpp"
 #include "closures/wall_correction.hpp"
 #include "common/case_request.hpp"
+#include "unresolved/cases/coupling_model.hpp"
 #include "unresolved/coupling/suspension_viscosity.hpp"
 #include "unresolved/dem/particle_params.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
@@ -40,10 +41,19 @@ struct TubePriesConfig {
   SuspensionViscosity suspension_viscosity = SuspensionViscosity::none;   // the cells' stress (suspension_viscosity.hpp)
   double checkpoint_every_wall_s = 600.0;   // wall-clock interval between restart files (and one at the end)
   std::uint64_t seed = 1;
+
+  /// The [coupling] keys above as one model (coupling_model.hpp).
+  [[nodiscard]] CouplingModel coupling_model() const {
+    return {.void_fraction_rate = void_fraction_rate, .drag = drag, .lift = lift, .deformation = deformation,
+            .wall_correction = wall_correction, .self_induced_correction = self_induced_correction,
+            .suspension_viscosity = suspension_viscosity};
+  }
 };
 
+/// Measured by simulate_tube_pries; the Pries 1992 fields (0 until then) are filled on the validation side by
+/// add_pries_comparison (validate/tube_pries_comparison.hpp), so no solver-side code reads analysis/.
 struct TubePriesResult {
-  nlohmann::json summary;                // every measured and reference value (summary.json)
+  nlohmann::json summary;                // every measured value (summary.json), and the reference once compared
   double ht_d = 0.0;
   double mu_rel = 0.0;
   double ht_d_pries = 0.0;
@@ -55,11 +65,6 @@ struct TubePriesResult {
 /// Reads a tube-pries case file. Bad input (impossible hematocrit, unknown closure, Courant or DEM-step
 /// violation, a length that is not a whole number of cells) is a ConfigError naming the key.
 [[nodiscard]] TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick);
-/// Closure spec from one string: a registered name ("stokes", "schiller_naumann", "saffman_mei", "none") or a
-/// closure file (*.toml, model "expression"; a relative path is taken relative to `base_dir`, the case file's folder
-/// in a case, the working directory when empty).
-[[nodiscard]] hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file,
-                                                          const std::filesystem::path& base_dir = {});
 
 /// Time series sample handed to the observer every CFD step.
 struct TubePriesSample {
@@ -76,7 +81,7 @@ struct TubePriesRestart {
 
 class CfdDemFrames;
 
-/// Runs the plasma-only reference and the coupled tube; throws ConfigError for inputs found bad on the way
+/// Runs the plasma-only reference and the coupled tube on the CFD-DEM skeleton (tube_pries_measurement.cpp); throws ConfigError for inputs found bad on the way
 /// (insertion impossible, particles outside the tube, DEM step, a checkpoint of another case). With restart.dir a
 /// checkpoint is written every c.checkpoint_every_wall_s and at the end; with restart.resume the run continues
 /// from it up to c.end_time_s (which may be later than the saved run's): the samples before the checkpoint are
@@ -86,7 +91,9 @@ class CfdDemFrames;
                                                   const std::function<void(const TubePriesSample&)>& observe,
                                                   const TubePriesRestart& restart = {}, CfdDemFrames* frames = nullptr);
 
-/// `hemoscale run` entry: returns 0 after a completed run (the comparison is reported, not judged).
+/// `hemoscale run` entry: the run on the CFD-DEM skeleton, then the Pries comparison and the checks
+/// (validate/tube_pries_checks.hpp): exit 0 when they pass, 1 when one fails. Defined on the validation side,
+/// validate/tube_pries_run.cpp (library hs_validate), because the comparison reads analysis/.
 int run_tube_pries(const hs::common::CaseRequest& request);
 
 }  // namespace hs::unresolved

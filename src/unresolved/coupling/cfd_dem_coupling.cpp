@@ -252,19 +252,24 @@ void CfdDemCoupling::exchange_drag() {
   }
 }
 
-void CfdDemCoupling::step() {
+void CfdDemCoupling::dem_substeps() {
   if (steps_ == 0) particle_forces();
   ParticleStore& p = dem_.particles();
   for (auto& col : p.drag_impulse_N_s()) std::fill(col.begin(), col.end(), 0.0);
   for (int s = 0; s < settings_.n_coupling; ++s) dem_.step();
+}
+
+void CfdDemCoupling::particles_to_grid() {
   fill_fields();
   if (settings_.two_way) exchange_drag();
   fill_cell_field_ghosts(fluid_.grid(), fluid_.explicit_force_density_N_m3());
+}
+
+void CfdDemCoupling::fluid_step() {
   fluid_.step();
   stats_.received_by_fluid_N_s = received_by_fluid_N_s();
   if (settings_.two_way) stats_.pending_N_s += stats_.received_by_fluid_N_s + stats_.drag_impulse_particles_N_s;
   ++steps_;
-  particle_forces();
 }
 
 Vec3 CfdDemCoupling::fluid_momentum_kg_m_s() const {

@@ -82,7 +82,23 @@ class CfdDemCoupling {
  public:
   CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSettings settings, CouplingClosures closures);
 
-  void step();
+  /// One coupled step: the four stages below in this order (the case skeleton times them one by one and may run
+  /// its own between them, e.g. cells in and out after the DEM sub-steps).
+  void step() {
+    dem_substeps();
+    particles_to_grid();
+    fluid_step();
+    fluid_to_particles();
+  }
+  /// Stage 1: the n_coupling DEM steps under the forces of the last step (computed first on the first step).
+  void dem_substeps();
+  /// Stage 2: the particles on the grid (divided map, eps, Us, Ksl) and their drag impulse given to the fluid.
+  /// Particles added or removed since stage 1 are taken as they are now.
+  void particles_to_grid();
+  /// Stage 3: one PISO (or projection) step of the fluid, then the exchange bookkeeping; counts the step.
+  void fluid_step();
+  /// Stage 4: the fluid at the particles and the forces of the next step (pressure gradient, viscous, lift, drag).
+  void fluid_to_particles() { particle_forces(); }
   [[nodiscard]] const ExchangeStats& exchange() const { return stats_; }
   [[nodiscard]] const DividedMap& map() const { return map_; }
   [[nodiscard]] long steps() const { return steps_; }

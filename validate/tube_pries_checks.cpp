@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "unresolved/cases/tube_pries_checks.hpp"
+#include "validate/tube_pries_checks.hpp"
 
 #include <cmath>
 #include <numbers>

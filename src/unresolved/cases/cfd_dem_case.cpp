@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+// The unresolved case skeleton: solvers from the setup, the staged loop, rows, checkpoints and signals.
+#include "unresolved/cases/cfd_dem_case.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/errors.hpp"
+#include "common/stop_request.hpp"
+
+namespace hs::unresolved {
+namespace {
+
+void write_checkpoint(const CfdDemSolvers& run, const CfdDemMeasurement& m, const std::vector<std::vector<double>>& rows,
+                      const CfdDemRestart& restart) {
+  hs::common::Checkpoint cp;
+  run.coupling().write_state(cp);
+  std::vector<double> series;
+  for (const auto& row : rows) series.insert(series.end(), row.begin(), row.end());
+  cp.put("series", series);
+  m.write_state(cp);
+  cp.meta()["case_type"] = m.case_type();
+  cp.meta()["step"] = run.coupling().steps();
+  cp.write(restart.dir, restart.rank);
+}
+
+std::vector<std::vector<double>> read_checkpoint(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDemRestart& restart) {
+  const hs::common::Checkpoint cp = hs::common::Checkpoint::read(restart.dir, restart.rank);
+  if (cp.meta().value("case_type", "") != m.case_type()) {
+    throw hs::common::ConfigError(fmt::format("{}: not a {} checkpoint", restart.dir.string(), m.case_type()));
+  }
+  run.coupling().read_state(cp);
+  const std::vector<double>& series = cp.doubles("series");
+  const std::size_t width = m.columns().size();
+  if (series.size() != width * static_cast<std::size_t>(run.coupling().steps())) {
+    throw hs::common::ConfigError(fmt::format("{}: checkpoint series of {} values for {} steps", restart.dir.string(),
+                                              series.size(), run.coupling().steps()));
+  }
+  m.read_state(cp);
+  std::vector<std::vector<double>> rows;
+  for (std::size_t k = 0; k < series.size(); k += width) {
+    rows.emplace_back(series.begin() + static_cast<long>(k), series.begin() + static_cast<long>(k + width));
+  }
+  return rows;
+}
+
+/// The groups every CFD-DEM run has: n_coupling and the viscous number nu dt / dx^2 (PISO's stability measure,
+/// fvm_solver.hpp).
+nlohmann::json skeleton_groups(const CfdDemSolvers& run) {
+  const FvmSolver& f = run.fluid();
+  return {{"n_coupling", run.coupling_settings().n_coupling},
+          {"viscous_number", f.fluid().kinematic_viscosity_m2_s * f.settings().dt_s / std::pow(f.grid().dx_m(), 2)}};
+}
+
+}  // namespace
+
+CfdDemSolvers::CfdDemSolvers(CfdDemSetup setup)
+    : shape_(std::move(setup.shape)), coupling_settings_(setup.coupling) {
+  grid_ = std::make_unique<FvmGrid>(*shape_, setup.grid);
+  dem_ = std::make_unique<DemSystem>(setup.dem, shape_.get());
+  fluid_ = std::make_unique<FvmSolver>(*grid_, setup.fluid, setup.piso, setup.drive);
+  coupling_ = std::make_unique<CfdDemCoupling>(*fluid_, *dem_, setup.coupling, std::move(setup.closures));
+}
+
+CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDemLoopOptions& options) {
+  const CfdDemRestart& restart = options.restart;
+  CfdDemCoupling& coupling = run.coupling();
+  CfdDemOutcome out;
+  const auto t0 = std::chrono::steady_clock::now();
+  m.prepare(run);
+  out.prepare_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  long rows_shown = 0;
+  const auto show = [&](const std::vector<double>& row) {
+    if (options.on_row) options.on_row(row);
+    if (options.progress != nullptr) options.progress->update(++rows_shown);
+  };
+  if (restart.resume) {
+    out.rows = read_checkpoint(run, m, restart);   // restores the mean velocity the saved run used for u_r+ too
+    for (const auto& row : out.rows) show(row);
+  } else {
+    m.start(run);
+  }
+  hs::common::TimeLoop loop(options.steps, coupling.steps());
+  loop.add("dem_substeps", [&] { coupling.dem_substeps(); });
+  m.add_stages(loop, run);
+  loop.add("particles_to_grid", [&] { coupling.particles_to_grid(); });
+  loop.add("fluid_step", [&] { coupling.fluid_step(); });
+  loop.add("fluid_to_particles", [&] { coupling.fluid_to_particles(); });
+  loop.add("measure", [&] { out.rows.push_back(m.sample(run)); });
+  if (options.after_step) {
+    loop.add("output_frames", [&] { options.after_step(run, coupling.steps(), coupling.steps() == options.steps); });
+  }
+  hs::common::CheckpointSchedule schedule(options.checkpoint_every_wall_s);
+  const hs::common::StopRequestScope stop_requests;
+  while (loop.step() < loop.end_step()) {
+    loop.run_steps(1);
+    show(out.rows.back());
+    if (const int signal = hs::common::stop_signal()) {
+      if (!restart.dir.empty()) write_checkpoint(run, m, out.rows, restart);
+      throw hs::common::RunInterrupted(fmt::format("stopped by signal {} at step {} of {}{}", signal, coupling.steps(),
+                                                   options.steps,
+                                                   restart.dir.empty() ? "" : "; checkpoint written, continue with --resume"),
+                                       signal);
+    }
+    if (!restart.dir.empty() && schedule.due()) write_checkpoint(run, m, out.rows, restart);
+  }
+  if (!restart.dir.empty()) write_checkpoint(run, m, out.rows, restart);
+  out.summary = m.summary(run, out.rows);
+  const nlohmann::json groups = skeleton_groups(run);
+  for (const auto& g : groups.items()) out.summary["groups"][g.key()] = g.value();
+  out.summary["cfd_steps"] = static_cast<long>(out.rows.size());
+  out.summary["stage_timings"] = loop.timings();
+  out.summary["prepare_seconds"] = out.prepare_seconds;
+  out.timing_table = loop.timing_table();
+  return out;
+}
+
+}  // namespace hs::unresolved

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// Case type "tube-open": RBC spheres injected at the inlet of a straight open tube (velocity inlet at z = 0,
+// pressure outlet at z = L) and removed at its outlet, on the CFD-DEM skeleton.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/case_request.hpp"
+#include "common/config/config_file.hpp"
+#include "unresolved/cases/cfd_dem_case.hpp"
+#include "unresolved/cases/coupling_model.hpp"
+#include "unresolved/dem/particle_params.hpp"
+
+namespace hs::unresolved {
+
+struct TubeOpenConfig {
+  double diameter_m = 0.0;
+  double length_m = 0.0;                 // inlet at z = 0, outlet at z = length_m
+  FluidProperties fluid{};
+  double inlet_mean_velocity_m_s = 0.0;  // mean of the parabolic plasma velocity on the inlet faces
+  double discharge_hematocrit = 0.0;     // Ht_d of the inflow: RBC flux / (RBC + plasma flux)
+  std::uint64_t seed = 1;
+  ParticleParams particles{};
+  CouplingModel model{};
+  int cells_across = 10;
+  double dt_s = 0.0;
+  int piso_correctors = 4;               // see parse_tube_open
+  PressureCoupling pressure_coupling = PressureCoupling::piso;
+  int n_coupling = 1;
+  double end_time_s = 0.0;
+  double average_from_fraction = 0.5;    // the outlet's Ht_d and the tube's Ht_T over the last (1 - this) of the run
+  double checkpoint_every_wall_s = 600.0;
+  double vtk_every_s = 0.0;
+  bool quick = false;
+
+  [[nodiscard]] long steps() const;
+  /// The time a cell moving at the mean velocity takes from inlet to outlet, L / U.
+  [[nodiscard]] double transit_time_s() const { return length_m / inlet_mean_velocity_m_s; }
+};
+
+/// Reads a tube-open case file; ConfigError naming the key for an out-of-range value, a length that is not a whole
+/// number of cells, a Courant number > 1 at the inlet's centreline speed or a DEM step above 0.1 min(t_Rayleigh,
+/// t_Hertz). --quick: 20 CFD steps.
+[[nodiscard]] TubeOpenConfig parse_tube_open(hs::common::ConfigFile& file, bool quick);
+
+/// The open tube along z: shape, grid (inlet parabola on z-, pressure outlet on z+), DEM domain, coupling.
+[[nodiscard]] CfdDemSetup tube_open_setup(const TubeOpenConfig& c);
+
+/// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says.
+/// Returns summary.json's content without the checks.
+[[nodiscard]] nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<void(const std::vector<double>&)>& on_row,
+                                                const CfdDemRestart& restart = {});
+
+/// `hemoscale run` entry: exit 0 when the case's checks pass (tube_open_measurement.hpp), 1 otherwise.
+int run_tube_open(const hs::common::CaseRequest& request);
+
+}  // namespace hs::unresolved

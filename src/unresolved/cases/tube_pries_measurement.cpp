@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: MIT
+// tube-pries on the CFD-DEM skeleton: the periodic tube, the plasma reference, insertion, flow rates, averages.
+#include "unresolved/cases/tube_pries_measurement.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "common/dimensionless_groups.hpp"
+#include "common/errors.hpp"
+#include "common/geometry/tube.hpp"
+#include "unresolved/cases/cfd_dem_frames.hpp"
+#include "unresolved/dem/insertion.hpp"
+
+namespace hs::unresolved {
+namespace {
+
+using hs::common::Vec3;
+
+FlowDrive drive_of(const TubePriesConfig& c) {
+  return {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = c.pressure_gradient_Pa_m};
+}
+
+long steps_of(const TubePriesConfig& c) { return std::max(1L, std::lround(c.end_time_s / c.dt_s)); }
+
+double rbc_flow_rate(const DemSystem& dem, double length_m) {
+  const ParticleStore& p = dem.particles();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < p.n_owned(); ++i) {
+    const double r = p.radius_m()[i];
+    sum += 4.0 / 3.0 * std::numbers::pi * r * r * r * p.velocity_m_s()[2][i];
+  }
+  return sum / length_m;   // the mean over the periodic length of the flux through a cross-section
+}
+
+/// Means over the last (1 - from_fraction) of the series, and Ht_d of that window's two halves (steadiness).
+struct SeriesAverages {
+  double q_blood_m3_s, q_rbc_m3_s, ht_d_first_half, ht_d_second_half;
+  long samples;
+};
+
+SeriesAverages average_series(const std::vector<std::vector<double>>& rows, double from_fraction) {
+  const long total = static_cast<long>(rows.size());
+  const long first = static_cast<long>(from_fraction * static_cast<double>(total));
+  double sum_blood = 0.0, sum_rbc = 0.0;
+  std::array<double, 2> half_rbc{}, half_blood{};
+  for (long s = first; s < total; ++s) {
+    const std::vector<double>& x = rows[static_cast<std::size_t>(s)];
+    sum_blood += x[1];
+    sum_rbc += x[2];
+    const std::size_t half = 2 * (s - first) < total - first ? 0 : 1;
+    half_rbc[half] += x[2];
+    half_blood[half] += x[1];
+  }
+  const double n = static_cast<double>(total - first);
+  return {sum_blood / n, sum_rbc / n, half_rbc[0] / half_blood[0], half_rbc[1] / half_blood[1], total - first};
+}
+
+}  // namespace
+
+CfdDemSetup tube_pries_setup(const TubePriesConfig& c) {
+  const double r = 0.5 * c.diameter_m;
+  std::array<SideCondition, 6> sides{};
+  sides[4].type = SideType::periodic;
+  sides[5].type = SideType::periodic;
+  const hs::common::Box3 box{{-r, -r, 0.0}, {r, r, c.length_m}};
+  return {.shape = std::make_unique<hs::common::Tube>(hs::common::TubeSpec{.start_m = {0, 0, 0}, .end_m = {0, 0, c.length_m},
+                                                                            .radius_m = r}),
+          .grid = {.box_m = box, .dx_m = c.diameter_m / c.cells_across, .sides = sides},
+          .fluid = c.fluid,
+          .piso = {.dt_s = c.dt_s, .coupling = c.pressure_coupling},
+          .drive = drive_of(c),
+          .dem = {.params = c.particles, .domain = {.box = box, .periodic = {false, false, true}}, .time_step_s = c.dt_s / c.n_coupling},
+          .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0},
+                       .tube_radius_m = r, .wall_correction = c.wall_correction,
+                       .self_induced_correction = c.self_induced_correction, .suspension_viscosity = c.suspension_viscosity},
+          .closures = make_closures(c.coupling_model())};
+}
+
+std::vector<std::string> TubePriesMeasurement::columns() const {
+  return {"time_s", "flow_rate_blood_m3_s", "flow_rate_rbc_m3_s", "discharge_hematocrit", "pressure_iterations"};
+}
+
+void TubePriesMeasurement::prepare(CfdDemSolvers& run) {
+  FvmSolver plasma(run.grid(), c_.fluid, {.dt_s = c_.dt_s, .coupling = c_.pressure_coupling}, drive_of(c_));
+  const long steps = steps_of(c_);
+  for (long s = 0; s < steps; ++s) plasma.step();
+  q_plasma_m3_s_ = plasma.flow_rate_m3_s(2);
+}
+
+void TubePriesMeasurement::start(CfdDemSolvers& run) {
+  const InsertionResult inserted = insert_at_volume_fraction(
+      run.shape(), run.dem().domain(),
+      {.volume_fraction = c_.tube_hematocrit, .radius_m = c_.particles.radius_m(), .seed = c_.seed, .key = "tube_hematocrit"});
+  // Fluid and cells start at rest: the slip stays in the closures' range (u_r+ < 0) while the flow develops.
+  for (const Vec3& x : inserted.positions_m) run.dem().add_particle(x);
+  ht_achieved_ = inserted.achieved_fraction;
+  rbc_count_ = static_cast<double>(inserted.positions_m.size());
+  const double r = 0.5 * c_.diameter_m;
+  run.coupling().set_mean_velocity_m_s(q_plasma_m3_s_ / (std::numbers::pi * r * r));
+}
+
+std::vector<double> TubePriesMeasurement::sample(const CfdDemSolvers& run) {
+  const double q_rbc = rbc_flow_rate(run.dem(), c_.length_m);
+  const double q_blood = run.fluid().flow_rate_m3_s(2) + q_rbc;
+  return {run.fluid().time_s(), q_blood, q_rbc, q_rbc / q_blood, static_cast<double>(run.fluid().last_stats().pressure_iterations)};
+}
+
+void TubePriesMeasurement::write_state(hs::common::Checkpoint& cp) const {
+  const std::vector<double> insertion{ht_achieved_, rbc_count_};
+  cp.put("insertion", insertion);
+}
+
+void TubePriesMeasurement::read_state(const hs::common::Checkpoint& cp) {
+  const std::vector<double>& insertion = cp.doubles("insertion");
+  if (insertion.size() != 2) throw hs::common::ConfigError("checkpoint: the tube-pries insertion record has the wrong length");
+  ht_achieved_ = insertion[0];
+  rbc_count_ = insertion[1];
+}
+
+nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std::vector<std::vector<double>>& rows) const {
+  const SeriesAverages avg = average_series(rows, c_.average_from_fraction);
+  const double r_tube = 0.5 * c_.diameter_m;
+  const double q_blood = avg.q_blood_m3_s;
+  const double mu = c_.fluid.density_kg_m3 * c_.fluid.kinematic_viscosity_m2_s;
+  const double u_blood = q_blood / (std::numbers::pi * r_tube * r_tube);
+  const double u_plasma = q_plasma_m3_s_ / (std::numbers::pi * r_tube * r_tube);
+  const double wall_shear_rate = 4.0 * u_plasma / r_tube;   // Poiseuille plasma: 4 u_mean / R
+  nlohmann::json j;
+  j["diameter_um"] = c_.diameter_m * 1e6;
+  j["tube_hematocrit_requested"] = c_.tube_hematocrit;
+  j["tube_hematocrit"] = ht_achieved_;
+  j["rbc_count"] = static_cast<long>(rbc_count_);
+  j["discharge_hematocrit"] = avg.q_rbc_m3_s / q_blood;
+  j["relative_apparent_viscosity"] = q_plasma_m3_s_ / q_blood;
+  j["flow_rate_blood_m3_s"] = q_blood;
+  j["flow_rate_rbc_m3_s"] = avg.q_rbc_m3_s;
+  j["flow_rate_plasma_only_m3_s"] = q_plasma_m3_s_;
+  j["steady"] = std::abs(avg.ht_d_second_half - avg.ht_d_first_half) <= c_.steady_tolerance * std::abs(avg.ht_d_second_half);
+  j["ht_d_change_between_averaging_halves"] = avg.ht_d_second_half - avg.ht_d_first_half;
+  j["averaged_steps"] = avg.samples;
+  j["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
+  write_model_summary(c_.coupling_model(), j);
+  j["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
+  j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c_.fluid.density_kg_m3, c_.diameter_m, 2.0 * u_blood, mu)},
+                 {"wall_gamma_plus", hs::common::shear_rate_plus(wall_shear_rate, r_tube, c_.fluid.kinematic_viscosity_m2_s)},
+                 {"confinement_d_over_D", c_.particles.diameter_m / c_.diameter_m}};
+  return j;
+}
+
+TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::function<void(const TubePriesSample&)>& observe,
+                                    const TubePriesRestart& restart, CfdDemFrames* frames) {
+  CfdDemSolvers run(tube_pries_setup(c));
+  TubePriesMeasurement m(c);
+  CfdDemLoopOptions options{.steps = steps_of(c),
+                            .checkpoint_every_wall_s = c.checkpoint_every_wall_s,
+                            .restart = {.dir = restart.dir, .resume = restart.resume, .rank = restart.rank},
+                            .on_row = [&](const std::vector<double>& x) { observe({x[0], x[1], x[2], x[3], x[4]}); },
+                            .after_step = {},
+                            .progress = nullptr};
+  if (frames != nullptr) {
+    options.after_step = [frames](const CfdDemSolvers& s, long step, bool last) { frames->after_step(s.fluid(), s.dem(), step, last); };
+  }
+  const CfdDemOutcome out = run_cfd_dem(run, m, options);
+  return tube_pries_result(out.summary);
+}
+
+TubePriesResult tube_pries_result(const nlohmann::json& summary) {
+  TubePriesResult res;
+  res.summary = summary;
+  res.ht_d = summary.at("discharge_hematocrit").get<double>();
+  res.mu_rel = summary.at("relative_apparent_viscosity").get<double>();
+  return res;
+}
+
+}  // namespace hs::unresolved

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// `hemoscale run` for case type "tube-pries": the skeleton's run folder and outputs, then the Pries 1992 comparison
+// and the case's checks (here, on the validation side, because they read analysis/).
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/log.hpp"
+#include "common/run_context.hpp"
+#include "unresolved/cases/cfd_dem_case_run.hpp"
+#include "unresolved/cases/tube_pries.hpp"
+#include "unresolved/cases/tube_pries_measurement.hpp"
+#include "unresolved/coupling/one_rank_guard.hpp"
+#include "validate/tube_pries_checks.hpp"
+#include "validate/tube_pries_comparison.hpp"
+
+namespace hs::unresolved {
+
+int run_tube_pries(const hs::common::CaseRequest& request) {
+  require_one_rank("tube-pries");   // before the run folder is made
+  const TubePriesConfig c = parse_tube_pries(*request.config, request.quick);
+  hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-pries");
+  hs::common::Log& log = ctx.log();
+  log.set_quiet(request.quiet);
+  log.info("tube-pries: D = {:.4g} m, L = {:.4g} m, Ht_c = {:.3g}, {} cells across, dt = {:.4g} s, n_coupling = {}, wall correction {}",
+           c.diameter_m, c.length_m, c.tube_hematocrit, c.cells_across, c.dt_s, c.n_coupling,
+           hs::closures::wall_correction_name(c.wall_correction));
+  CfdDemSolvers run(tube_pries_setup(c));
+  TubePriesMeasurement m(c);
+  const CfdDemOutcome out = run_cfd_dem_in_folder(ctx, run, m,
+                                                  {.steps = std::max(1L, std::lround(c.end_time_s / c.dt_s)),
+                                                   .checkpoint_every_wall_s = c.checkpoint_every_wall_s,
+                                                   .vtk_every_s = c.vtk_every_s});
+  TubePriesResult r = tube_pries_result(out.summary);
+  add_pries_comparison(c, r);
+  hs::common::CheckList checks;
+  check_tube_pries(c, r, {.quick = request.quick}, checks);
+  log.info("Ht_d = {:.4f} (Pries {:.4f}, {:+.1f}%), mu_rel = {:.4f} (Pries {:.4f}, {:+.1f}%){}; outputs in {}", r.ht_d,
+           r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct,
+           request.quick ? " (--quick: not a comparison, the run is far from steady)" : "", ctx.folder().path().string());
+  return finish_cfd_dem_case(ctx, r.summary, checks, "tube-pries");
+}
+
+}  // namespace hs::unresolved
