@@ -3,12 +3,14 @@
 // and the case's checks (here, on the validation side, because they read analysis/).
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
 #include "common/log.hpp"
 #include "common/run_context.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
+#include "unresolved/cases/grid_budget.hpp"
 #include "unresolved/cases/tube_pries.hpp"
 #include "unresolved/cases/tube_pries_measurement.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
@@ -20,6 +22,9 @@ namespace hs::unresolved {
 int run_tube_pries(const hs::common::CaseRequest& request) {
   require_one_rank("tube-pries");   // before the run folder is made
   const TubePriesConfig c = parse_tube_pries(*request.config, request.quick);
+  const double tube_volume_m3 = std::numbers::pi * 0.25 * c.diameter_m * c.diameter_m * c.length_m;
+  require_tube_grid_memory(*request.config, c.diameter_m, c.length_m, c.cells_across,
+                           c.tube_hematocrit * tube_volume_m3 / c.particles.volume_m3());
   hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-pries");
   hs::common::Log& log = ctx.log();
   log.set_quiet(request.quiet);

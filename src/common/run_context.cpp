@@ -51,6 +51,7 @@ RunContext RunContext::start(const CaseRequest& request, const std::string& case
   ctx.log_ = std::make_unique<Log>(ctx.rank_);
   ctx.log_->open_file(ctx.folder_->file("log.txt"));
   // Every line of a --quick run says so: its numbers come from a coarse, short smoke version of the case.
+  ctx.log_->set_quiet(request.quiet);
   if (request.quick) ctx.log_->set_prefix("[--quick] ");
   if (ctx.rank_ == 0) {
     request.config->write_resolved(ctx.folder_->file("case.resolved.toml"), request.quick, request.resume);

@@ -67,3 +67,12 @@ TEST(MemoryRefusal, TubeCellCase) {
   expect_refused(edited_case("cases/resolved/tube-drag", "length_m = 50.0e-6", "length_m = 50.0", "tubecell"),
                  "[geometry] length_m = 50", "50 micrometres is written 50e-6");
 }
+
+TEST(MemoryRefusal, CfdDemTubeCases) {
+  // length_m = 120 (micrometres meant) at 10 cells across a 30 um tube: 4e7 cells along, ~8e12 bytes of grid.
+  expect_refused(edited_case("cases/unresolved/tube-open", "length_m += 120e-6", "length_m = 120.0", "tubeopen"),
+                 "[geometry] length_m = 120", "120 micrometres is written 120e-6");
+  // length_m = 8 (micrometres meant) at 10 cells across a 20 um tube: 4e6 cells along.
+  expect_refused(edited_case("cases/unresolved/tube-plasma", "length_m += 8e-6", "length_m = 8.0", "tubeplasma"),
+                 "[numerics] cells_across_diameter = 10", "8 micrometres is written 8e-6");
+}

@@ -53,6 +53,14 @@ TEST(MpiGuard, TubePlasmaOnTwoRanksStops) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(MpiGuard, TubeOpenOnTwoRanksStops) {
+  const fs::path out = fresh_dir("tube_open");
+  const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-open";
+  const auto r = run_on_two_ranks("run --quiet --quick " + case_dir.string() + " --output " + out.string());
+  expect_refused(r, "tube-open");
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(MpiGuard, PriesValidationsAndTheCfdDemBenchOnTwoRanksStop) {
   const fs::path json = fresh_dir("validate") / "pries.json";
   for (const char* name : {"pries", "pries-wall", "pries-wall-relative"}) {

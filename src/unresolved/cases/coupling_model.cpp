@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "closures/named_closure_set.hpp"
 #include "closures/register_builtin.hpp"
 #include "common/errors.hpp"
 
@@ -35,16 +36,23 @@ hs::closures::ClosureSpec closure_spec_from(const std::string& name_or_file, con
 
 CouplingModel parse_coupling_model(hs::common::ConfigSection& coupling, const std::filesystem::path& base_dir) {
   CouplingModel m;
-  auto closure_key = [&](const char* key, const char* fallback, auto make) {
-    const hs::closures::ClosureSpec spec = coupling.has(key) ? closure_spec_from(coupling.string(key), base_dir)
-                                                             : closure_spec_from(fallback);
+  // A committed set's name ("resolved") becomes its file, so the run's summary records which file it used.
+  auto closure_key = [&](const char* key, const char* fallback, hs::closures::ClosureKind kind, auto make) {
+    hs::closures::ClosureSpec spec = coupling.has(key) ? closure_spec_from(coupling.string(key), base_dir)
+                                                       : closure_spec_from(fallback);
+    try {
+      spec = hs::closures::resolve_closure_set(spec, kind);
+    } catch (const hs::common::ConfigError& e) {
+      coupling.fail(key, e.what());
+    }
     check_closure(coupling, key, spec, make);
     return spec;
   };
   m.void_fraction_rate = coupling.boolean_or("void_fraction_rate", false);   // see CouplingSettings: noisy without smoothing
-  m.drag = closure_key("drag", "schiller_naumann", hs::closures::make_drag_closure);
-  m.lift = closure_key("lift", "none", hs::closures::make_lift_closure);
-  m.deformation = closure_key("deformation", "none", hs::closures::make_deformation_closure);
+  using hs::closures::ClosureKind;
+  m.drag = closure_key("drag", "schiller_naumann", ClosureKind::drag, hs::closures::make_drag_closure);
+  m.lift = closure_key("lift", "none", ClosureKind::lift, hs::closures::make_lift_closure);
+  m.deformation = closure_key("deformation", "none", ClosureKind::deformation, hs::closures::make_deformation_closure);
   if (m.drag.model == "none") coupling.fail("drag", "a drag closure is required (a name or a closure file)");
   const std::string outside = coupling.string_or("outside_validity", "clamp");   // closures/closure_registry.hpp
   if (outside != "clamp" && outside != "extrapolate") {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 #include "common/geometry/tube.hpp"
 #include "common/run_context.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
+#include "unresolved/cases/grid_budget.hpp"
 #include "unresolved/cases/tube_open_measurement.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/cell_injector.hpp"
@@ -115,6 +117,9 @@ nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<v
 int run_tube_open(const hs::common::CaseRequest& request) {
   require_one_rank("tube-open");   // before the run folder is made
   const TubeOpenConfig c = parse_tube_open(*request.config, request.quick);
+  const double tube_volume_m3 = std::numbers::pi * 0.25 * c.diameter_m * c.diameter_m * c.length_m;
+  require_tube_grid_memory(*request.config, c.diameter_m, c.length_m, c.cells_across,
+                           c.discharge_hematocrit * tube_volume_m3 / c.particles.volume_m3());
   hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-open");
   ctx.log().set_quiet(request.quiet);
   ctx.log().info("tube-open: D = {:.4g} m, L = {:.4g} m, inlet U = {:.4g} m/s, Ht_d = {:.3g}, {} cells across, dt = {:.4g} s, "

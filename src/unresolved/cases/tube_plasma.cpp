@@ -21,6 +21,7 @@
 #include "common/run_folder.hpp"
 #include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
+#include "unresolved/cases/grid_budget.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
 #include "common/fluid_properties.hpp"
@@ -159,6 +160,7 @@ nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, con
 int run_tube_plasma(const hs::common::CaseRequest& request) {
   require_one_rank("tube-plasma");   // before the run folder is made
   const TubePlasmaConfig c = parse(*request.config, request.quick);
+  require_tube_grid_memory(*request.config, c.diameter_m, c.length_m, c.cells_across);
   hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-plasma");
   const hs::common::RunFolder& folder = ctx.folder();
   hs::common::Log& log = ctx.log();

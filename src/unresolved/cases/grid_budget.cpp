@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+#include "unresolved/cases/grid_budget.hpp"
+
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "common/memory_budget.hpp"
+
+namespace hs::unresolved {
+
+void require_tube_grid_memory(const hs::common::ConfigFile& file, double diameter_m, double length_m, int cells_across,
+                              double particles) {
+  const double along = std::ceil(length_m / (diameter_m / cells_across));
+  const double cells = static_cast<double>(cells_across) * cells_across * along;
+  const std::array<hs::common::SizingKey, 3> keys{{{"[geometry] diameter_m", diameter_m, true},
+                                                   {"[geometry] length_m", length_m, true},
+                                                   {"[numerics] cells_across_diameter", static_cast<double>(cells_across), false}}};
+  const std::string what = particles > 0.0
+                               ? fmt::format("a grid of {} x {} x {:.0f} cells and ~{:.3g} particles", cells_across, cells_across,
+                                             along, particles)
+                               : fmt::format("a grid of {} x {} x {:.0f} cells", cells_across, cells_across, along);
+  hs::common::require_memory(file, {what, cells * kFvmBytesPerCell + particles * kDemBytesPerParticle}, keys);
+}
+
+}  // namespace hs::unresolved
