@@ -115,7 +115,7 @@ std::filesystem::path invocation_file(const CampaignSpec& spec) {
 }
 
 CampaignSpec read_campaign_spec(const std::filesystem::path& dir) {
-  auto file = common::ConfigFile::load(dir / "campaign.toml");
+  auto file = common::ConfigFile::load(dir / "campaign.toml", "campaign file");
   CampaignSpec spec;
   spec.dir = dir;
   auto root = file->root();

@@ -89,7 +89,7 @@ void read_provenance(ConfigSection root, ClosureFile& c) {
 }  // namespace
 
 ClosureFile ClosureFile::load(const std::filesystem::path& file) {
-  auto config = hs::common::ConfigFile::load(file);
+  auto config = hs::common::ConfigFile::load(file, "closure file");
   auto root = config->root();
   ClosureFile c;
   c.name = root.string("name");

@@ -115,7 +115,7 @@ void read_closure(ConfigSection root, FitRequest& r) {
 }  // namespace
 
 FitRequest read_fit_request(const std::filesystem::path& file) {
-  auto config = hs::common::ConfigFile::load(file);
+  auto config = hs::common::ConfigFile::load(file, "fit file");
   auto root = config->root();
   FitRequest r;
   r.fit_file = file;

@@ -131,3 +131,12 @@ TEST(ClosureFile, UnknownKeysAndWrongKindAreRejected) {
     EXPECT_NE(std::string(e.what()).find("a lift closure is needed"), std::string::npos) << e.what();
   }
 }
+
+TEST(ClosureFileMessages, AMissingClosureFileIsCalledAClosureFile) {
+  try {
+    (void)hs::closures::ClosureFile::load("/nonexistent/cd.toml");
+    FAIL() << "a missing closure file was read";
+  } catch (const hs::common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/cd.toml: no such closure file"), std::string::npos) << e.what();
+  }
+}

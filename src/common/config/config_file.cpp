@@ -303,9 +303,9 @@ void ConfigSection::derived(std::string_view key, double value) {
 
 ConfigFile::ConfigFile(toml::table table, std::filesystem::path file) : table_(std::move(table)), file_(std::move(file)) {}
 
-std::unique_ptr<ConfigFile> ConfigFile::load(const std::filesystem::path& file) {
+std::unique_ptr<ConfigFile> ConfigFile::load(const std::filesystem::path& file, std::string_view kind) {
   if (!std::filesystem::is_regular_file(file)) {
-    throw ConfigError(fmt::format("{}: no such case file", file.string()));
+    throw ConfigError(fmt::format("{}: no such {}", file.string(), kind));
   }
   try {
     return std::unique_ptr<ConfigFile>(new ConfigFile(toml::parse_file(file.string()), file));

@@ -76,8 +76,9 @@ class ConfigSection {
 /// A parsed case file. Create with load(); read through root(); call finish() after reading.
 class ConfigFile {
  public:
-  /// Parses the file; a missing or malformed file throws ConfigError with the line and column.
-  static std::unique_ptr<ConfigFile> load(const std::filesystem::path& file);
+  /// Parses the file; a missing file throws ConfigError "FILE: no such KIND" (case, closure, fit, campaign file), a
+  /// malformed one names the line and column.
+  static std::unique_ptr<ConfigFile> load(const std::filesystem::path& file, std::string_view kind = "case file");
   /// Parses TOML text (tests, generated cases); `name` stands in for the file name in messages.
   static std::unique_ptr<ConfigFile> parse(std::string_view text, std::string name);
 
