@@ -12,7 +12,7 @@
 namespace hs::campaign {
 
 /// About this many time-series rows are archived per run (every k-th sample, plus the last one): the
-/// period averages are in summary.json; the series is for plots (tools/plot_periods.py).
+/// period averages are in summary.json; the series is for plots (tools/plot_tube_cell.py, tools/plot_cell_flow.py).
 inline constexpr std::size_t kArchivedSeriesRows = 1000;
 
 /// Copies a done run into `archive`/<name>/ and drops its archived checkpoint, if any. Files are replaced atomically.

@@ -61,7 +61,8 @@ double available_memory_bytes() {
 std::string micrometre_hint(double value_m) {
   if (!(value_m >= kCellScaleLimit_m)) return "";
   if (value_m >= 1.0) {   // a micrometre count written as metres
-    return fmt::format(" ({:g} m; lengths are in metres: {:g} micrometres is written {:g}e-6)", value_m, value_m, value_m);
+    return fmt::format(" ({:g} m; lengths are in metres: {:g} micrometres is written {:g}e-6)", value_m, value_m,
+                       value_m);
   }
   return fmt::format(" ({:g} m is {:g} mm, not cell scale; lengths are in metres: 25 micrometres is written 25e-6)",
                      value_m, value_m * 1e3);
@@ -73,7 +74,8 @@ void require_memory(const ConfigFile& file, const MemoryNeed& need, std::span<co
   std::string set_by, hints;
   for (const SizingKey& k : keys) {
     set_by += fmt::format("{}{} = {:g}", set_by.empty() ? "" : ", ", k.key, k.value);
-    if (k.is_length_m && !micrometre_hint(k.value).empty()) hints += fmt::format("; {}{}", k.key, micrometre_hint(k.value));
+    const std::string hint = k.is_length_m ? micrometre_hint(k.value) : "";
+    if (!hint.empty()) hints += fmt::format("; {}{}", k.key, hint);
   }
   throw ConfigError(fmt::format("{}: the run needs ~{} for {} (set by {}), but this machine has {} available; "
                                 "make the domain smaller or the spacing coarser{}",

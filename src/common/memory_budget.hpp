@@ -28,8 +28,8 @@ struct MemoryNeed {
   double bytes = 0.0;
 };
 
-/// A parenthesised hint ("25 m; ... 25 micrometres is written 25e-6") when `value_m` (a length meant at cell scale) is 1 mm or more;
-/// empty otherwise. Cell-scale cases (resolved cells, microchannels) span micrometres to a few hundred of them.
+/// A parenthesised hint ("25 m; ... 25 micrometres is written 25e-6") when `value_m`, a length meant at cell scale, is
+/// 1 mm or more; empty otherwise. Cell-scale cases (resolved cells, microchannels) span micrometres to a few hundred of them.
 [[nodiscard]] std::string micrometre_hint(double value_m);
 
 /// Throws ConfigError "<file>: needs ~X GiB for WHAT (set by KEY = V, ...) but Y GiB are available; ..." when

@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 namespace {
 
 /// A copy of a shipped case folder with one line of its case.toml replaced; the path of the copy.
-fs::path edited_case(const std::string& shipped, const std::string& from, const std::string& to, const std::string& name) {
+fs::path edited_case(const std::string& shipped, const std::string& from, const std::string& to,
+                     const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("hs_memory_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -59,7 +60,8 @@ TEST(MemoryRefusal, MillimetreTubeInTubePoiseuille) {
 
 TEST(MemoryRefusal, NanometreSpacingInShear) {
   // dx_m = 1e-9: 24000 x 24000 x 16000 nodes; no length looks like micrometres, so no hint, but the keys are named.
-  expect_refused(edited_case("cases/resolved/shear", "dx_m = 1.0e-6", "dx_m = 1.0e-9", "dx"), "[numerics] dx_m = 1e-09", "");
+  expect_refused(edited_case("cases/resolved/shear", "dx_m = 1.0e-6", "dx_m = 1.0e-9", "dx"), "[numerics] dx_m = 1e-09",
+                 "");
 }
 
 TEST(MemoryRefusal, TubeCellCase) {

@@ -14,13 +14,12 @@ void require_tube_grid_memory(const hs::common::ConfigFile& file, double diamete
                               double particles) {
   const double along = std::ceil(length_m / (diameter_m / cells_across));
   const double cells = static_cast<double>(cells_across) * cells_across * along;
-  const std::array<hs::common::SizingKey, 3> keys{{{"[geometry] diameter_m", diameter_m, true},
-                                                   {"[geometry] length_m", length_m, true},
-                                                   {"[numerics] cells_across_diameter", static_cast<double>(cells_across), false}}};
-  const std::string what = particles > 0.0
-                               ? fmt::format("a grid of {} x {} x {:.0f} cells and ~{:.3g} particles", cells_across, cells_across,
-                                             along, particles)
-                               : fmt::format("a grid of {} x {} x {:.0f} cells", cells_across, cells_across, along);
+  const std::array<hs::common::SizingKey, 3> keys{
+      {{"[geometry] diameter_m", diameter_m, true},
+       {"[geometry] length_m", length_m, true},
+       {"[numerics] cells_across_diameter", static_cast<double>(cells_across), false}}};
+  std::string what = fmt::format("a grid of {} x {} x {:.0f} cells", cells_across, cells_across, along);
+  if (particles > 0.0) what += fmt::format(" and ~{:.3g} particles", particles);
   hs::common::require_memory(file, {what, cells * kFvmBytesPerCell + particles * kDemBytesPerParticle}, keys);
 }
 

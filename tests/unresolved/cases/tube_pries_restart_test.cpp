@@ -24,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using hs::unresolved::TubePriesSample;
 
-/// A short 30 um tube at Ht_c = 0.30 (68 spheres; 37 contact springs at the stop, so the springs' restart is
+/// A short 30 um tube at Ht_c = 0.30 (68 spheres; 30 contact springs at the stop, so the springs' restart is
 /// exercised), with the Haberman-Sayre wall correction, a lift (its per-sphere column) and the suspension viscosity
 /// (its factor field) on; `steps` CFD steps of 0.2 ms (125 DEM steps each).
 std::string restart_case(int steps) {
