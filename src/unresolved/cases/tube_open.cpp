@@ -9,14 +9,15 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "common/geometry/opening_condition.hpp"
 #include "common/geometry/tube.hpp"
 #include "common/run_context.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
 #include "unresolved/cases/grid_budget.hpp"
+#include "unresolved/cases/step_limits.hpp"
 #include "unresolved/cases/tube_open_measurement.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/cell_injector.hpp"
-#include "unresolved/dem/hertz_contact_law.hpp"
 
 namespace hs::unresolved {
 
@@ -59,19 +60,11 @@ TubeOpenConfig parse_tube_open(hs::common::ConfigFile& file, bool quick) {
     geometry.fail("diameter_m", fmt::format("must be larger than a cell's sphere (d_p = {:.4g} m)", c.particles.diameter_m));
   }
   const double u_max = 2.0 * c.inlet_mean_velocity_m_s;   // the parabola's centreline speed
-  if (u_max * c.dt_s / dx > 1.0) {   // CFDEM keeps Co < 1 (methods note sec. 0)
-    numerics.fail("dt_s", fmt::format("gives a Courant number {:.3g} > 1 at the inlet's centreline speed {:.4g} m/s; use "
-                                      "dt_s <= {:.4g}", u_max * c.dt_s / dx, u_max, dx / u_max));
-  }
-  const double dt_dem = c.dt_s / c.n_coupling;
-  const double limit = 0.1 * std::min(rayleigh_time_s(c.particles), hertz_time_s(c.particles, c.particles.max_impact_velocity_m_s));
-  if (dt_dem > limit) {
-    numerics.fail("n_coupling", fmt::format("gives a DEM step dt_s / n_coupling = {:.4g} s > 0.1 min(t_Rayleigh, t_Hertz) = "
-                                            "{:.4g} s; use n_coupling >= {}", dt_dem, limit, static_cast<long>(std::ceil(c.dt_s / limit))));
-  }
-  if (c.model.self_induced_correction && c.particles.diameter_m > dx) {
-    coupling.fail("self_induced_correction", fmt::format("needs spheres no larger than a cell, but d_p = {:.4g} m > dx = {:.4g} m",
-                                                         c.particles.diameter_m, dx));
+  check_courant(numerics, u_max, c.dt_s, dx, "the inlet's centreline speed");
+  check_dem_step(numerics, c.particles, c.dt_s, c.n_coupling);
+  if (c.model.self_induced_correction) {   // SelfMobility is measured in a periodic tube's frame
+    coupling.fail("self_induced_correction", "is measured in a periodic tube (tube-pries); tube-open takes the closures' inputs "
+                                             "from the channel frame: leave it out or set it to false");
   }
   c.quick = quick;
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
@@ -80,27 +73,30 @@ TubeOpenConfig parse_tube_open(hs::common::ConfigFile& file, bool quick) {
   return c;
 }
 
+std::vector<hs::common::Opening> tube_open_openings(const TubeOpenConfig& c) {
+  const double r = 0.5 * c.diameter_m;
+  return {{.name = "inlet", .kind = hs::common::OpeningKind::inlet, .centre_m = {0, 0, 0}, .normal = {0, 0, -1}, .radius_m = r},
+          {.name = "outlet", .kind = hs::common::OpeningKind::outlet, .centre_m = {0, 0, c.length_m}, .normal = {0, 0, 1},
+           .radius_m = r}};
+}
+
 CfdDemSetup tube_open_setup(const TubeOpenConfig& c) {
   const double r = 0.5 * c.diameter_m;
-  const double u = c.inlet_mean_velocity_m_s;
-  std::array<SideCondition, 6> sides{};   // x and y: walls (the tube's wall lies inside the box)
-  sides[4].type = SideType::velocity_inlet;
-  sides[4].inlet_velocity_m_s = [r, u](const hs::common::Vec3& x) {
-    return hs::common::Vec3{0.0, 0.0, 2.0 * u * std::max(0.0, 1.0 - (x.x * x.x + x.y * x.y) / (r * r))};
-  };
-  sides[5].type = SideType::pressure_outlet;
+  const std::vector<hs::common::Opening> openings = tube_open_openings(c);
   const hs::common::Box3 box{{-r, -r, 0.0}, {r, r, c.length_m}};
+  FvmGridSpec grid{.box_m = box, .dx_m = c.diameter_m / c.cells_across, .sides = {}};   // walls but for the openings
+  grid.openings = {hs::common::flow_rate_inlet(openings[0], c.inlet_mean_velocity_m_s * std::numbers::pi * r * r),
+                   hs::common::pressure_outlet(openings[1], 0.0)};
   return {.shape = std::make_unique<hs::common::Tube>(hs::common::TubeSpec{.start_m = {0, 0, 0}, .end_m = {0, 0, c.length_m},
                                                                             .radius_m = r}),
-          .grid = {.box_m = box, .dx_m = c.diameter_m / c.cells_across, .sides = sides},
+          .grid = grid,
           .fluid = c.fluid,
           .piso = {.dt_s = c.dt_s, .correctors = c.piso_correctors, .coupling = c.pressure_coupling},
           .drive = {},
           .dem = {.params = c.particles, .domain = {.box = box, .periodic = {false, false, false}}, .time_step_s = c.dt_s / c.n_coupling},
-          // The straight tube's frame is exact for the closures' inputs (radial lift direction, gamma+ from R).
-          .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.model.void_fraction_rate, .axis = 2,
-                       .axis_point_m = {0, 0, 0}, .tube_radius_m = r, .wall_correction = c.model.wall_correction,
-                       .self_induced_correction = c.model.self_induced_correction,
+          // The closures' inputs from the geometry and the local flow (channel_frame.hpp), as in any open geometry.
+          .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.model.void_fraction_rate,
+                       .closure_frame = ClosureFrame::channel, .wall_correction = c.model.wall_correction,
                        .suspension_viscosity = c.model.suspension_viscosity},
           .closures = make_closures(c.model)};
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Case type "tube-open": RBC spheres injected at the inlet of a straight open tube (velocity inlet at z = 0,
+// Case type "tube-open": RBC spheres injected at the inlet of a straight open tube (flow-rate inlet at z = 0,
 // pressure outlet at z = L) and removed at its outlet, on the CFD-DEM skeleton.
 #pragma once
 
@@ -11,6 +11,7 @@
 
 #include "common/case_request.hpp"
 #include "common/config/config_file.hpp"
+#include "common/geometry/opening.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/coupling_model.hpp"
 #include "unresolved/dem/particle_params.hpp"
@@ -21,7 +22,7 @@ struct TubeOpenConfig {
   double diameter_m = 0.0;
   double length_m = 0.0;                 // inlet at z = 0, outlet at z = length_m
   FluidProperties fluid{};
-  double inlet_mean_velocity_m_s = 0.0;  // mean of the parabolic plasma velocity on the inlet faces
+  double inlet_mean_velocity_m_s = 0.0;  // plasma flow rate in over the tube's section, Q_p / (pi R^2)
   double discharge_hematocrit = 0.0;     // Ht_d of the inflow: RBC flux / (RBC + plasma flux)
   std::uint64_t seed = 1;
   ParticleParams particles{};
@@ -47,7 +48,11 @@ struct TubeOpenConfig {
 /// t_Hertz). --quick: 20 CFD steps.
 [[nodiscard]] TubeOpenConfig parse_tube_open(hs::common::ConfigFile& file, bool quick);
 
-/// The open tube along z: shape, grid (inlet parabola on z-, pressure outlet on z+), DEM domain, coupling.
+/// The tube's two openings: "inlet" (the disc at z = 0) and "outlet" (at z = L), each of the tube's radius.
+[[nodiscard]] std::vector<hs::common::Opening> tube_open_openings(const TubeOpenConfig& c);
+
+/// The open tube along z: shape, grid (flow-rate inlet and pressure outlet at its openings), DEM domain, coupling
+/// (closures in the channel frame).
 [[nodiscard]] CfdDemSetup tube_open_setup(const TubeOpenConfig& c);
 
 /// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says.

@@ -57,11 +57,7 @@ WindowSums window_sums(const std::vector<std::vector<double>>& rows, long first,
 
 }  // namespace
 
-TubeOpenMeasurement::TubeOpenMeasurement(const TubeOpenConfig& c) : c_(c) {
-  const double r = 0.5 * c.diameter_m;
-  openings_ = {{.name = "inlet", .kind = hs::common::OpeningKind::inlet, .centre_m = {0, 0, 0}, .normal = {0, 0, -1}, .radius_m = r},
-               {.name = "outlet", .kind = hs::common::OpeningKind::outlet, .centre_m = {0, 0, c.length_m}, .normal = {0, 0, 1},
-                .radius_m = r}};
+TubeOpenMeasurement::TubeOpenMeasurement(const TubeOpenConfig& c) : c_(c), openings_(tube_open_openings(c)) {
   last_net_volume_m3_.assign(openings_.size(), 0.0);
 }
 
@@ -80,10 +76,7 @@ void TubeOpenMeasurement::prepare(CfdDemSolvers& run) {
                    run.shape(), run.dem().domain());
 }
 
-void TubeOpenMeasurement::start(CfdDemSolvers& run) {
-  // The tube starts empty and at rest; u_r+ takes the inflow's mean velocity.
-  run.coupling().set_mean_velocity_m_s(c_.inlet_mean_velocity_m_s);
-}
+void TubeOpenMeasurement::start(CfdDemSolvers&) {}   // the tube starts empty and at rest
 
 void TubeOpenMeasurement::add_stages(hs::common::TimeLoop& loop, CfdDemSolvers& run) {
   loop.add("cells_in_out", [this, &run] { exchange_cells(run); });

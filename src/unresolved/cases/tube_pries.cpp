@@ -9,7 +9,7 @@
 
 #include "common/errors.hpp"
 #include "common/fluid_properties.hpp"
-#include "unresolved/dem/hertz_contact_law.hpp"
+#include "unresolved/cases/step_limits.hpp"
 
 namespace hs::unresolved {
 
@@ -59,16 +59,8 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   }
   const double r = 0.5 * c.diameter_m;
   const double u_max = -c.pressure_gradient_Pa_m * r * r / (4.0 * c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s);
-  if (u_max * c.dt_s / dx > 1.0) {   // CFDEM keeps Co < 1 (methods note sec. 0), at the plasma centreline speed
-    numerics.fail("dt_s", fmt::format("gives a Courant number {:.3g} > 1 at the Poiseuille centreline speed {:.4g} m/s; use "
-                                      "dt_s <= {:.4g}", u_max * c.dt_s / dx, u_max, dx / u_max));
-  }
-  const double dt_dem = c.dt_s / c.n_coupling;
-  const double limit = 0.1 * std::min(rayleigh_time_s(c.particles), hertz_time_s(c.particles, c.particles.max_impact_velocity_m_s));
-  if (dt_dem > limit) {
-    numerics.fail("n_coupling", fmt::format("gives a DEM step dt_s / n_coupling = {:.4g} s > 0.1 min(t_Rayleigh, t_Hertz) = "
-                                            "{:.4g} s; use n_coupling >= {}", dt_dem, limit, static_cast<long>(std::ceil(c.dt_s / limit))));
-  }
+  check_courant(numerics, u_max, c.dt_s, dx, "the Poiseuille centreline speed");
+  check_dem_step(numerics, c.particles, c.dt_s, c.n_coupling);
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
   c.vtk_every_s = root.section_or_empty("output").positive_or("vtk_every_s", 0.0);   // 0 (absent): final frame only
   if (c.wall_correction != hs::closures::WallCorrection::none) {

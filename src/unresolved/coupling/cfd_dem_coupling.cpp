@@ -53,6 +53,10 @@ CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSetting
     // One-way: nothing to correct. With a suspension viscosity the measured M (plasma viscosity) would be too large.
     throw hs::common::ConfigError("coupling: the self-induced velocity correction needs two-way coupling and no suspension viscosity");
   }
+  if (settings_.self_induced_correction && settings_.closure_frame != ClosureFrame::tube) {
+    throw hs::common::ConfigError("coupling: the self-induced velocity correction is measured in a straight tube: it needs the tube frame");
+  }
+  if (settings_.closure_frame == ClosureFrame::channel) channel_ = std::make_unique<ChannelFrame>(fluid_);
   if (settings_.self_induced_correction && !(settings_.tube_radius_m > 0.0)) {
     throw hs::common::ConfigError("coupling: the self-induced velocity correction needs the tube radius (tube_radius_m > 0)");
   }
@@ -75,15 +79,23 @@ const SelfMobility& CfdDemCoupling::self_mobility(double diameter_m) {
                                      diameter_m, settings_.void_fraction_feedback ? settings_.eps_min : 0.0);
 }
 
-Vec3 CfdDemCoupling::radial_unit(const Vec3& x) const {
+CfdDemCoupling::LocalChannel CfdDemCoupling::local_channel(const Vec3& x) {
+  if (channel_) {
+    const ChannelFrame::Local local = channel_->at(x);
+    return {.lift_direction = channel_->wall_normal(x), .radius_m = local.channel_radius_m,
+            .flow_direction = local.flow.direction, .mean_velocity_m_s = local.flow.mean_velocity_m_s};
+  }
   Vec3 r = x - settings_.axis_point_m;
   r[settings_.axis] = 0.0;
   const double n = norm(r);
-  return n > 0.0 ? r / n : Vec3{};
+  Vec3 axial;
+  axial[settings_.axis] = 1.0;
+  return {.lift_direction = n > 0.0 ? r / n : Vec3{}, .radius_m = settings_.tube_radius_m, .flow_direction = axial,
+          .mean_velocity_m_s = mean_velocity_m_s_};
 }
 
 hs::closures::ClosureInputs CfdDemCoupling::inputs(std::size_t i, const Vec3& uf, const std::array<Vec3, 3>& grad,
-                                                  double local_ht) const {
+                                                  double local_ht, const LocalChannel& channel) const {
   const ParticleStore& p = dem_.particles();
   const double nu = fluid_.fluid().kinematic_viscosity_m2_s;
   const double d = 2.0 * p.radius_m()[i];
@@ -93,9 +105,10 @@ hs::closures::ClosureInputs CfdDemCoupling::inputs(std::size_t i, const Vec3& uf
   in.re_p = hs::common::particle_reynolds(d, norm(slip), nu);
   in.re_shear = gd * d * d / nu;   // Saffman/Mei shear Reynolds number (closure_inputs.hpp)
   in.shear_ratio = in.re_p > 0.0 ? in.re_shear / in.re_p : 0.0;
-  in.gamma_plus = hs::common::shear_rate_plus(gd, settings_.tube_radius_m, nu);
-  in.u_r_plus = mean_velocity_m_s_ > 0.0
-                    ? hs::common::slip_velocity_plus(particle_velocity(p, i)[settings_.axis], uf[settings_.axis], mean_velocity_m_s_)
+  in.gamma_plus = hs::common::shear_rate_plus(gd, channel.radius_m, nu);
+  in.u_r_plus = channel.mean_velocity_m_s > 0.0
+                    ? hs::common::slip_velocity_plus(dot(particle_velocity(p, i), channel.flow_direction),
+                                                     dot(uf, channel.flow_direction), channel.mean_velocity_m_s)
                     : 0.0;
   in.hematocrit = local_ht;
   return in;
@@ -115,6 +128,7 @@ void CfdDemCoupling::particle_forces() {
   const double dt = fluid_.settings().dt_s;
   lift_reaction_N_.fill(Vec3{});
   map_.locate(p);
+  if (channel_) channel_->new_step();
   const BlockField<double>& eps = fluid_.void_fraction();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x = particle_position(p, i);
@@ -127,13 +141,14 @@ void CfdDemCoupling::particle_forces() {
       uf = uf - self_mobility(d).induced_velocity(x, -1.0 * (j / dt + lift_before));
     }
     const auto grad = fluid_.velocity_gradient_at(x);
-    hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)]);
+    const LocalChannel channel = local_channel(x);
+    hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)], channel);
     // DI = (L - B)/(L + B) lies in [0, 1) by definition; a learned DI evaluated outside its training range can
     // leave it (e.g. u_r+ > 0 in a transient), and a negative DI then fed back into C_d(DI) runs away.
     if (closures_.deformation) in.di = std::clamp(closures_.deformation->deformation_index(in), 0.0, 0.999);
     di[i] = in.di;
     const double vp = std::numbers::pi / 6.0 * d * d * d;
-    const double k_wall = hs::closures::wall_correction_factor(settings_.wall_correction, d, 2.0 * settings_.tube_radius_m);
+    const double k_wall = hs::closures::wall_correction_factor(settings_.wall_correction, d, 2.0 * channel.radius_m);
     beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in) * k_wall;
     if (!(beta[i] >= 0.0) || !std::isfinite(beta[i])) {
       throw hs::common::NumericalError(fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
@@ -153,7 +168,7 @@ void CfdDemCoupling::particle_forces() {
         lift_in.re_p = hs::common::particle_reynolds(d, ur, fluid_.fluid().kinematic_viscosity_m2_s);
         lift_in.shear_ratio = lift_in.re_p > 0.0 ? lift_in.re_shear / lift_in.re_p : 0.0;
       }
-      lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * radial_unit(x);
+      lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * channel.lift_direction;
       f = f + lift;
       for (int m = 0; m < kMarkersPerSphere; ++m) lift_reaction_N_[map_.cell(i, m)] -= lift / kMarkersPerSphere;
     }

@@ -10,6 +10,7 @@
 #include "closures/lift_closure.hpp"
 #include "closures/wall_correction.hpp"
 #include "common/vec3.hpp"
+#include "unresolved/coupling/channel_frame.hpp"
 #include "unresolved/coupling/divided_void_fraction.hpp"
 #include "unresolved/coupling/self_mobility.hpp"
 #include "unresolved/coupling/suspension_viscosity.hpp"
@@ -25,6 +26,12 @@ namespace hs::unresolved {
 /// momentum minus the pending imbalance is conserved to round-off. explicit_impulse: the fluid gets exactly
 /// -J/(V dt) and no Ksl (conservative in the same step, stable only for dt_CFD below rho eps / Ksl).
 enum class FluidDrag { implicit, explicit_impulse };
+
+/// Where the closures' "tube" comes from. tube: a straight tube given by axis, axis_point_m and tube_radius_m (the
+/// lift along the radius, gamma+ from R, u_r+ along the axis over the case's mean velocity). channel: from the
+/// grid's shape and the local flow at every sphere (channel_frame.hpp; docs/cfd-dem.md "Closure inputs without a
+/// tube"), for any geometry; in a straight tube it gives the tube frame's values (channel_frame_test).
+enum class ClosureFrame { tube, channel };
 
 struct CouplingSettings {
   int n_coupling = 1;                 // DEM steps per CFD step (dt_CFD = n_coupling dt_DEM)
@@ -42,12 +49,14 @@ struct CouplingSettings {
   bool void_fraction_rate = true;
   bool pressure_force = true;         // F_p = -V_p grad p (model A requires it)
   bool viscous_force = true;          // F_v = V_p div(tau) (model A requires it)
+  ClosureFrame closure_frame = ClosureFrame::tube;
   // Tube frame for the closures' groups and the radial lift direction: axis through axis_point_m along axis.
   int axis = 2;
   hs::common::Vec3 axis_point_m{};
   double tube_radius_m = 0.0;         // R_c in gamma+ = gammadot R_c^2 / nu
   // Confinement factor K(d_p / 2 R_c) on every particle's drag (closures/wall_correction.hpp): the closures
-  // describe an unbounded sphere; haberman_sayre makes them the on-axis drag in the tube of radius tube_radius_m.
+  // describe an unbounded sphere; haberman_sayre makes them the on-axis drag in the tube of radius tube_radius_m
+  // (channel frame: of the local channel radius R_c).
   hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;
   // true: the closures get the undisturbed velocity estimate u_f - M F instead of the interpolated u_f, with F the
   // force each sphere gave the fluid in the last step (drag and lift) and M the grid's self-mobility measured on
@@ -102,7 +111,8 @@ class CfdDemCoupling {
   [[nodiscard]] const ExchangeStats& exchange() const { return stats_; }
   [[nodiscard]] const DividedMap& map() const { return map_; }
   [[nodiscard]] long steps() const { return steps_; }
-  /// Mean axial velocity of the mixture used for u_r+ (set by the case; default: from the fluid flow rate).
+  /// Mean axial velocity u_av of u_r+ in the tube frame (set by the case; until set, u_r+ = 0). The channel frame
+  /// measures it at every sphere instead.
   void set_mean_velocity_m_s(double u_av) { mean_velocity_m_s_ = u_av; }
   /// Total momentum of the fluid (rho sum eps u dx^3 over the active velocity nodes), kg m/s.
   [[nodiscard]] hs::common::Vec3 fluid_momentum_kg_m_s() const;
@@ -122,9 +132,18 @@ class CfdDemCoupling {
   void fill_fields();
   void exchange_drag();
   [[nodiscard]] hs::common::Vec3 received_by_fluid_N_s() const;
+  /// The channel at a sphere: the lift's direction, R_c of gamma+ and the wall correction, u_av and the flow's
+  /// direction of u_r+ (from the tube settings or the channel frame).
+  struct LocalChannel {
+    hs::common::Vec3 lift_direction;
+    double radius_m;
+    hs::common::Vec3 flow_direction;
+    double mean_velocity_m_s;
+  };
+  [[nodiscard]] LocalChannel local_channel(const hs::common::Vec3& x);
   [[nodiscard]] hs::closures::ClosureInputs inputs(std::size_t i, const hs::common::Vec3& uf,
-                                                    const std::array<hs::common::Vec3, 3>& grad, double local_ht) const;
-  [[nodiscard]] hs::common::Vec3 radial_unit(const hs::common::Vec3& x) const;
+                                                    const std::array<hs::common::Vec3, 3>& grad, double local_ht,
+                                                    const LocalChannel& channel) const;
   /// The self-mobility table for spheres of this diameter, measured on first use; ConfigError for d_p > dx.
   [[nodiscard]] const SelfMobility& self_mobility(double diameter_m);
 
@@ -139,6 +158,7 @@ class CfdDemCoupling {
   double mean_velocity_m_s_ = 0.0;
   long steps_ = 0;
   std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
+  std::unique_ptr<ChannelFrame> channel_;       // the channel frame's memo (closure_frame = channel)
 };
 
 }  // namespace hs::unresolved

@@ -118,6 +118,7 @@ class FvmSolver {
   [[nodiscard]] const BlockField<double>& viscosity_factor() const { return visc_; }
   void coupling_fields_changed() { coefficients_dirty_ = true; }
   [[nodiscard]] const BlockField<double>& void_fraction() const { return eps_; }
+  [[nodiscard]] const BlockField<hs::common::Vec3>& particle_velocity_m_s() const { return us_; }
 
   // ---- Results in SI. ----
   /// Fluid velocity at a point (trilinear on each staggered component; wall nodes hold the wall value).

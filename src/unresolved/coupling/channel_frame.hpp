@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// The closures' "tube" in any channel: lift direction, channel radius and mean velocity from the geometry.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "common/geometry/shape.hpp"
+#include "common/vec3.hpp"
+#include "unresolved/fvm/fvm_solver.hpp"
+
+namespace hs::unresolved {
+
+/// What the geometry says about the channel around a point (docs/cfd-dem.md "Closure inputs without a tube").
+struct ChannelPoint {
+  hs::common::Vec3 wall_normal;   // unit gradient of the signed distance: towards the nearest wall; zero on the medial axis
+  double wall_distance_m = 0.0;   // minus the signed distance (> 0 in the fluid)
+  double channel_radius_m = 0.0;  // R_c: radius of the largest sphere in the channel touching the wall where x's normal meets it
+  hs::common::Vec3 centre_m;      // that sphere's centre, on the channel's medial axis
+};
+
+/// The channel at x_m: the normal from the signed distance's central differences (step 1e-3 length_scale_m), R_c as
+/// the maximum of the wall distance along the line from x against the normal (marched in steps of length_scale_m / 4,
+/// then refined by golden section). In a straight tube: the radial unit vector, R and the axis point, exactly.
+[[nodiscard]] ChannelPoint channel_point(const hs::common::Shape& shape, const hs::common::Vec3& x_m, double length_scale_m);
+
+/// The flow through the channel's section at a point: its direction (the fluid velocity at the centre) and the mean
+/// velocity of the mixture (plasma and cells) along it over the section (in a tube: Q / A, with Q the blood flow).
+struct ChannelFlow {
+  hs::common::Vec3 direction;     // unit; zero where the centre's fluid is at rest
+  double mean_velocity_m_s = 0.0;
+};
+
+/// The section's mean over the grid cells of a slab three cells thick across the flow, out to R_c (+ one cell for the
+/// cut cells at a wall), each weighted with its fluid volume.
+[[nodiscard]] ChannelFlow channel_flow(const FvmSolver& fluid, const ChannelPoint& at);
+
+/// The channel frame of a run: the geometry per grid cell, computed on first use and kept (the walls do not move),
+/// and the section's flow per cell, computed at most once per step.
+class ChannelFrame {
+ public:
+  explicit ChannelFrame(const FvmSolver& fluid);
+
+  /// Lift direction at x itself (the wall normal there; zero on the medial axis).
+  [[nodiscard]] hs::common::Vec3 wall_normal(const hs::common::Vec3& x_m) const;
+  /// The channel and its flow at the centre of the cell holding x (call new_step() when the fluid has moved).
+  struct Local {
+    double channel_radius_m;
+    ChannelFlow flow;
+  };
+  [[nodiscard]] Local at(const hs::common::Vec3& x_m);
+  void new_step() { ++step_; }
+
+ private:
+  const FvmSolver& fluid_;
+  std::vector<ChannelPoint> points_;
+  std::vector<char> have_point_;
+  std::vector<ChannelFlow> flows_;
+  std::vector<long> flow_step_;
+  long step_ = 0;
+};
+
+}  // namespace hs::unresolved
