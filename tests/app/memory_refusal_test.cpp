@@ -69,6 +69,14 @@ TEST(MemoryRefusal, TubeCellCase) {
                  "[geometry] length_m = 50", "50 micrometres is written 50e-6");
 }
 
+TEST(MemoryRefusal, OpenGeometryCase) {
+  // dx_m = 2e-8 (with dt_s = 2e-6 for the Courant check) over the 80 x 68 x 20 um box: 4000 x 3400 x 1000 cells,
+  // ~2.7e13 bytes.
+  expect_refused(edited_case("cases/unresolved/y-bifurcation", "dx_m            = 2e-6[^\n]*\ndt_s            = 2.0e-4",
+                             "dx_m = 2e-8\ndt_s = 2e-6", "opengeometry"),
+                 "[numerics] dx_m = 2e-08", "");
+}
+
 TEST(MemoryRefusal, CfdDemTubeCases) {
   // length_m = 120 (micrometres meant) at 10 cells across a 30 um tube: 4e7 cells along, ~8e12 bytes of grid.
   expect_refused(edited_case("cases/unresolved/tube-open", "length_m += 120e-6", "length_m = 120.0", "tubeopen"),

@@ -61,6 +61,14 @@ TEST(MpiGuard, TubeOpenOnTwoRanksStops) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(MpiGuard, OpenGeometryOnTwoRanksStops) {
+  const fs::path out = fresh_dir("open_geometry");
+  const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved/y-bifurcation";
+  const auto r = run_on_two_ranks("run --quiet --quick " + case_dir.string() + " --output " + out.string());
+  expect_refused(r, "open-geometry");
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(MpiGuard, PriesValidationsAndTheCfdDemBenchOnTwoRanksStop) {
   const fs::path json = fresh_dir("validate") / "pries.json";
   for (const char* name : {"pries", "pries-wall", "pries-wall-relative"}) {

@@ -25,7 +25,7 @@ namespace hs::unresolved {
 
 /// What a case's geometry and numerics give the skeleton; the solvers are built from it in this order.
 struct CfdDemSetup {
-  std::unique_ptr<hs::common::Shape> shape;   // the fluid region (walls of the FVM and the DEM)
+  std::shared_ptr<const hs::common::Shape> shape;   // the fluid region (walls of the FVM and the DEM)
   FvmGridSpec grid;                           // box, dx, boundary condition of each box side
   FluidProperties fluid;
   PisoSettings piso;
@@ -53,7 +53,7 @@ class CfdDemSolvers {
   [[nodiscard]] const CouplingSettings& coupling_settings() const { return coupling_settings_; }
 
  private:
-  std::unique_ptr<hs::common::Shape> shape_;
+  std::shared_ptr<const hs::common::Shape> shape_;
   std::unique_ptr<FvmGrid> grid_;
   std::unique_ptr<DemSystem> dem_;
   std::unique_ptr<FvmSolver> fluid_;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/config/config_file.hpp"
+#include "common/geometry/shape.hpp"
 
 namespace hs::unresolved {
 
@@ -19,5 +20,9 @@ inline constexpr double kDemBytesPerParticle = 2000.0;
 /// [numerics] cells_across_diameter, with the micrometre hint for lengths of 1 mm or more.
 void require_tube_grid_memory(const hs::common::ConfigFile& file, double diameter_m, double length_m, int cells_across,
                               double particles = 0.0);
+
+/// The same for a box of FVM cells of size dx_m holding about `particles` spheres; names [numerics] dx_m and the box's
+/// sides ([domain] box_min_m / box_max_m, or the shape's bounds when the case gives none).
+void require_box_grid_memory(const hs::common::ConfigFile& file, const hs::common::Box3& box, double dx_m, double particles);
 
 }  // namespace hs::unresolved
