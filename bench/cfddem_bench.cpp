@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // `hemoscale bench cfddem`: RBC spheres at Ht 0.10 in a periodic 100 um tube whose length holds N cells; median
-// wall time of a coupled CFD step (n_coupling DEM steps + coupling + PISO) and the process's peak RSS.
+// wall time of a coupled CFD step (n_coupling DEM steps + coupling + PISO) and the process's peak RSS. Then the open
+// tube (cfddem_open_tube.cpp) at 1e4 and 1e5 cells, each in a child process, under the key "open_tube".
 #include "bench/cfddem_bench.hpp"
 #include "bench/bench_targets.hpp"
+#include "bench/cfddem_open_tube.hpp"
+#include "bench/peak_rss.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
+#include <cstdlib>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -28,15 +31,7 @@ namespace {
 
 using namespace hs::unresolved;
 
-/// Peak resident set size of this process (VmHWM of /proc/self/status), GiB.
-double peak_rss_gib() {
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / (1024.0 * 1024.0);   // kB -> GiB
-  }
-  return 0.0;
-}
+constexpr int open_tube_repetitions = 5;   // timed CFD steps per open-tube size (median)
 
 struct Measured {
   double s_per_cfd_step;
@@ -85,10 +80,34 @@ Measured measure(long n_rbc, int repetitions) {
   return {times[times.size() / 2], peak_rss_gib(), n_coupling, grid.cell_count()};
 }
 
+/// The open tube at 1e4 and 1e5 cells (1e4 with --quick), each in a child process; JSON keyed "1e4", "1e5".
+nlohmann::json open_tube_sizes(bool quick) {
+  nlohmann::json out;
+  out["setup"] = open_tube_setup_json();
+  const std::vector<long> sizes = quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000};
+  fmt::print("cfddem open tube: velocity inlet, pressure outlet, RBCs injected and removed; started full at Ht 0.10, "
+             "100 um, 10 cells across, dt_CFD = 2e-4 s, {} warm-up steps\n", out["setup"]["warmup_steps"].get<int>());
+  for (const long n : sizes) {
+    const nlohmann::json m = measure_open_tube_in_child(n);
+    fmt::print("  {:>8} RBCs: {:.3f} s per CFD step (median of {}, n_coupling = {}, {} FVM cells), "
+               "peak RSS {:.2f} GiB, {} in / {} out while timed, {:.0f} s wall\n", m["cells"].get<long>(), m["s_per_cfd_step"].get<double>(),
+               m["timed_steps"].get<int>(), m["n_coupling"].get<int>(), m["fvm_cells"].get<long>(),
+               m["peak_rss_GiB"].get<double>(), m["cells_injected_in_timed_steps"].get<long>(),
+               m["cells_removed_in_timed_steps"].get<long>(), m["wall_s"].get<double>());
+    out[fmt::format("1e{}", static_cast<int>(std::lround(std::log10(static_cast<double>(n)))))] = m;
+  }
+  return out;
+}
+
 }  // namespace
 
 int run_cfddem_bench(const hs::common::TaskOptions& options) {
   hs::unresolved::require_one_rank("bench cfddem");
+  if (const char* cells = std::getenv(open_tube_child_env)) {   // a child of open_tube_sizes(): one size only
+    const nlohmann::json m = measure_open_tube(std::stol(cells), open_tube_repetitions);
+    if (options.json_file) hs::common::write_json(*options.json_file, m);
+    return 0;
+  }
   const std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
   nlohmann::json j;
   fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s\n");
@@ -100,6 +119,7 @@ int run_cfddem_bench(const hs::common::TaskOptions& options) {
     j[key + "_s_per_cfd_step"] = m.s_per_cfd_step;
     j[key + "_peak_rss_GiB"] = m.peak_rss_gib;
   }
+  j["open_tube"] = open_tube_sizes(options.quick);
   hs::common::CheckList checks;
   const auto measured = [&j](const char* key) { return j.contains(key) ? std::optional<double>(j[key].get<double>()) : std::nullopt; };
   expect_at_most(checks, options, "cfddem_1e6_s_per_cfd_step", measured("cfddem_1e6_s_per_cfd_step"), 2.0,

@@ -18,7 +18,7 @@ std::map<std::string, TaskEntry> benchmarks() {
   r["dem"] = {"DEM ns per particle-step, 1e5 Hertz spheres (in.rbcpack), vs LIGGGHTS", hs::bench::run_dem_bench};
   r["fvm"] = {"PISO fluid on the 3D lid-driven cube vs OpenFOAM icoFoam (ns per cell-step)", hs::bench::run_fvm_bench};
   r["regression"] = {"symbolic regression: 10 Feynman equations, gplearn vs full engine; evaluator speed", hs::bench::run_regression_bench};
-  r["cfddem"] = {"coupled CFD-DEM tube: s per CFD step and peak RSS for 1e4, 1e5, 1e6 RBCs", hs::bench::run_cfddem_bench};
+  r["cfddem"] = {"coupled CFD-DEM tube: s per CFD step and peak RSS for 1e4, 1e5, 1e6 RBCs (periodic), 1e4, 1e5 (open)", hs::bench::run_cfddem_bench};
   r["resolved"] = {"coupled RBC in the campaign tube: s per simulated ms, LBM/IBM/membrane shares, campaign hours", hs::bench::run_resolved_bench};
   return r;
 }

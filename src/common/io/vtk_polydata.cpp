@@ -31,7 +31,14 @@ VtkPolyData::VtkPolyData(std::span<const Vec3> points_m, std::span<const std::ar
 
 void VtkPolyData::add_point_scalar(const std::string& name, std::span<const double> values) {
   if (values.size() != points_.size()) throw std::logic_error("VtkPolyData: scalar size mismatch for " + name);
-  arrays_.push_back({name, 1, {values.begin(), values.end()}});
+  arrays_.push_back(
+      {.name = name, .components = 1, .values = {values.begin(), values.end()}, .labels = {}, .integer = false});
+}
+
+void VtkPolyData::add_point_scalar(const std::string& name, std::span<const std::int32_t> values) {
+  if (values.size() != points_.size()) throw std::logic_error("VtkPolyData: scalar size mismatch for " + name);
+  arrays_.push_back(
+      {.name = name, .components = 1, .values = {}, .labels = {values.begin(), values.end()}, .integer = true});
 }
 
 void VtkPolyData::add_point_vector(const std::string& name, std::span<const Vec3> values) {
@@ -39,7 +46,7 @@ void VtkPolyData::add_point_vector(const std::string& name, std::span<const Vec3
   std::vector<double> flat;
   flat.reserve(3 * values.size());
   for (const auto& v : values) flat.insert(flat.end(), {v.x, v.y, v.z});
-  arrays_.push_back({name, 3, std::move(flat)});
+  arrays_.push_back({.name = name, .components = 3, .values = std::move(flat), .labels = {}, .integer = false});
 }
 
 void VtkPolyData::write(const std::filesystem::path& file) const {
@@ -70,7 +77,10 @@ void VtkPolyData::write(const std::filesystem::path& file) const {
     return tag;
   };
   std::string point_data;
-  for (const auto& a : arrays_) point_data += declare("Float64", a.name, a.components, a.values);
+  for (const auto& a : arrays_) {
+    point_data += a.integer ? declare("Int32", a.name, 1, a.labels)
+                            : declare("Float64", a.name, a.components, a.values);
+  }
   const std::string points_decl = declare("Float64", "Points", 3, xyz);
   const std::string cells_decl = declare("Int64", "connectivity", 1, connectivity) + declare("Int64", "offsets", 1, offsets);
   const std::string cells_tag = as_vertices ? "Verts" : "Polys";

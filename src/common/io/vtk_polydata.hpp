@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -18,6 +19,8 @@ class VtkPolyData {
   explicit VtkPolyData(std::span<const Vec3> points_m, std::span<const std::array<int, 3>> triangles = {});
 
   void add_point_scalar(const std::string& name, std::span<const double> values);
+  /// An integer label per point (an index, a category), written as VTK Int32.
+  void add_point_scalar(const std::string& name, std::span<const std::int32_t> values);
   void add_point_vector(const std::string& name, std::span<const Vec3> values);
   void write(const std::filesystem::path& file) const;
 
@@ -26,6 +29,8 @@ class VtkPolyData {
     std::string name;
     int components;
     std::vector<double> values;
+    std::vector<std::int32_t> labels;   // used instead of values when `integer`
+    bool integer = false;
   };
   std::vector<Vec3> points_;
   std::vector<std::array<int, 3>> triangles_;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// DEM checkpoint format: magic, counts, then each owned column as raw little-endian doubles, ids, springs.
+// DEM checkpoint format: magic, counts, then each owned column as raw little-endian doubles, ids, inlet openings,
+// springs.
 #include "unresolved/dem/dem_checkpoint.hpp"
 
 #include <array>
@@ -18,7 +19,9 @@
 namespace hs::unresolved {
 namespace {
 
-constexpr std::array<char, 8> magic = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '2'};   // 2: with the lift column
+// 2: with the lift column; 3: with the inlet-opening column after the ids (2 is still read: openings = -1).
+constexpr std::array<char, 8> magic = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '3'};
+constexpr std::array<char, 8> magic_v2 = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '2'};
 
 /// The columns in file order; the same list for writing and reading.
 template <typename Store, typename F>
@@ -42,6 +45,17 @@ void get(std::istream& in, T* data, std::size_t n, const std::filesystem::path& 
   if (!in) throw hs::common::ConfigError(fmt::format("{}: DEM checkpoint is truncated", file.string()));
 }
 
+/// The optional inlet-opening array (absent in checkpoints written before it existed: no_inlet_opening).
+void read_inlet_openings(ParticleStore& p, const hs::common::Checkpoint& cp, const std::string& prefix) {
+  if (!cp.has(prefix + "inlet_opening")) return;
+  const std::vector<std::int64_t>& openings = cp.integers(prefix + "inlet_opening");
+  if (openings.size() != p.n_owned()) {
+    throw hs::common::ConfigError(fmt::format("checkpoint: DEM state \"{}\" has {} inlet openings for {} particles",
+                                              prefix, openings.size(), p.n_owned()));
+  }
+  for (std::size_t i = 0; i < openings.size(); ++i) p.inlet_opening()[i] = static_cast<std::int32_t>(openings[i]);
+}
+
 }  // namespace
 
 void write_dem_checkpoint(const DemSystem& dem, const std::filesystem::path& file) {
@@ -53,6 +67,7 @@ void write_dem_checkpoint(const DemSystem& dem, const std::filesystem::path& fil
     put(out, counts, 2);
     for_each_saved_column(p, [&](const std::vector<double>& c) { put(out, c.data(), p.n_owned()); });
     put(out, p.id().data(), p.n_owned());
+    put(out, p.inlet_opening().data(), p.n_owned());
     for (std::size_t k = 0; k < h.keys.size(); ++k) {
       const std::int64_t ids[2] = {h.keys[k].first, h.keys[k].second};
       put(out, ids, 2);
@@ -66,7 +81,9 @@ void read_dem_checkpoint(DemSystem& dem, const std::filesystem::path& file) {
   std::array<char, 8> head{};
   if (!in) throw hs::common::ConfigError(fmt::format("{}: cannot open the DEM checkpoint", file.string()));
   get(in, head.data(), head.size(), file);
-  if (head != magic) throw hs::common::ConfigError(fmt::format("{}: not a hemoscale DEM checkpoint of this version", file.string()));
+  if (head != magic && head != magic_v2) {
+    throw hs::common::ConfigError(fmt::format("{}: not a hemoscale DEM checkpoint of this version", file.string()));
+  }
   std::uint64_t counts[2] = {0, 0};
   get(in, counts, 2, file);
   ParticleStore& p = dem.particles();
@@ -74,6 +91,7 @@ void read_dem_checkpoint(DemSystem& dem, const std::filesystem::path& file) {
   for (std::uint64_t i = 0; i < counts[0]; ++i) p.add({});
   for_each_saved_column(p, [&](std::vector<double>& c) { get(in, c.data(), counts[0], file); });
   get(in, p.id().data(), counts[0], file);
+  if (head == magic) get(in, p.inlet_opening().data(), counts[0], file);   // v2: left at no_inlet_opening
   ContactHistory h;
   for (std::uint64_t k = 0; k < counts[1]; ++k) {
     std::int64_t ids[2];
@@ -93,6 +111,9 @@ void write_dem_state(const DemSystem& dem, hs::common::Checkpoint& cp, const std
   for_each_saved_column(p, [&](const std::vector<double>& c) { columns.insert(columns.end(), c.begin(), c.begin() + static_cast<long>(n)); });
   cp.put(prefix + "columns", columns);
   cp.put(prefix + "ids", std::span<const std::int64_t>(p.id().data(), n));
+  const auto& openings = p.inlet_opening();
+  cp.put(prefix + "inlet_opening",
+         std::vector<std::int64_t>(openings.begin(), openings.begin() + static_cast<long>(n)));
   const ContactHistory h = dem.contact_history();
   std::vector<std::int64_t> keys;
   std::vector<double> shear;
@@ -125,6 +146,7 @@ void read_dem_state(DemSystem& dem, const hs::common::Checkpoint& cp, const std:
     at += n;
   });
   std::copy(ids.begin(), ids.end(), p.id().begin());
+  read_inlet_openings(p, cp, prefix);
   ContactHistory h;
   for (std::size_t k = 0; k < keys.size() / 2; ++k) {
     h.keys.emplace_back(keys[2 * k], keys[2 * k + 1]);

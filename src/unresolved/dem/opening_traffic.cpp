@@ -97,22 +97,28 @@ std::vector<std::vector<NewCell>> OpeningTraffic::planned(const ParticleStore& p
 void OpeningTraffic::exchange(DemSystem& dem, double dt_s, const FluidAtOpenings& fluid) {
   note_ids(dem.particles());
   if (auto flags = leaving(dem.particles()); !flags.empty()) dem.remove_particles(flags);
-  for (const auto& cells : planned(dem.particles(), dt_s, fluid)) {
-    for (const NewCell& c : cells) dem.insert_particle(c.position_m, c.velocity_m_s, next_id_++);
+  const auto cells = planned(dem.particles(), dt_s, fluid);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    for (const NewCell& c : cells[k]) {
+      const std::size_t i = dem.insert_particle(c.position_m, c.velocity_m_s, next_id_++);
+      dem.particles().inlet_opening()[i] = static_cast<std::int32_t>(k);
+    }
   }
 }
 
 void OpeningTraffic::exchange(ParticleStore& particles, double dt_s, const FluidAtOpenings& fluid) {
   note_ids(particles);
   if (auto flags = leaving(particles); !flags.empty()) particles.remove_owned(flags);
-  for (const auto& cells : planned(particles, dt_s, fluid)) {
-    for (const NewCell& c : cells) {
+  const auto cells = planned(particles, dt_s, fluid);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    for (const NewCell& c : cells[k]) {
       particles.add({.position_m = c.position_m,
                      .velocity_m_s = c.velocity_m_s,
                      .angular_velocity_rad_s = {},
                      .radius_m = params_.radius_m(),
                      .mass_kg = params_.mass_kg(),
-                     .id = next_id_++});
+                     .id = next_id_++,
+                     .inlet_opening = static_cast<std::int32_t>(k)});
     }
   }
 }

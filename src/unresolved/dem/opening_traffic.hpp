@@ -44,7 +44,7 @@ struct FluidAtOpenings {
 /// After each DEM step: first every owned particle whose centre has crossed an opening's plane (height > 0)
 /// within its disc (lateral <= R + r) is removed and counted there (at an inlet too: backflow), then each inlet
 /// injects what it is owed (CellInjector). Ids of new cells continue above the largest id ever seen, so they
-/// never repeat. Bookkeeping: cells_injected() + (particles at the start) = cells_removed() + n_owned(), exactly.
+/// never repeat; each new cell records the index of its inlet in ParticleStore::inlet_opening(). Bookkeeping: cells_injected() + (particles at the start) = cells_removed() + n_owned(), exactly.
 class OpeningTraffic {
  public:
   /// ConfigError (naming the opening and key) for a bad opening or hematocrit.

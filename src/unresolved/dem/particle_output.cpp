@@ -2,6 +2,7 @@
 // VTK output of the particles.
 #include "unresolved/dem/particle_output.hpp"
 
+#include <cstdint>
 #include <vector>
 
 #include "common/io/vtk_polydata.hpp"
@@ -42,6 +43,7 @@ void write_particles_vtp(const ParticleStore& p, const std::filesystem::path& fi
   }
   if (p.lift_force_N()[0].size() >= n) vtp.add_point_vector("lift_force_N", owned_vectors(p.lift_force_N(), n));
   vtp.add_point_scalar("deformation_index", std::span<const double>(p.deformation_index().data(), n));
+  vtp.add_point_scalar("inlet_opening", std::span<const std::int32_t>(p.inlet_opening().data(), n));
   vtp.write(file);
 }
 

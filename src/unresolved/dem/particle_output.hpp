@@ -9,7 +9,8 @@
 namespace hs::unresolved {
 
 /// Writes points (m) with id, radius_m, velocity_m_s, angular_velocity_rad_s, force_N (contacts + hook),
-/// external_force_N and deformation_index of the owned particles.
+/// external_force_N, drag_force_N and lift_force_N (where the coupling set them), deformation_index and
+/// inlet_opening (Int32: the index of the opening the particle came in by, -1 if placed at the start).
 void write_particles_vtp(const ParticleStore& particles, const std::filesystem::path& file);
 
 }  // namespace hs::unresolved

@@ -3,6 +3,8 @@
 #include "unresolved/dem/particle_store.hpp"
 
 #include <stdexcept>
+#include <tuple>
+#include <type_traits>
 
 namespace hs::unresolved {
 
@@ -15,9 +17,17 @@ void ParticleStore::for_each_column(F&& f) {
   for (auto* c : {&radius_, &mass_, &drag_beta_, &di_}) f(*c);
 }
 
+template <typename F>
+void ParticleStore::for_each_any_column(F&& f) {
+  for_each_column(f);
+  f(id_);
+  f(inlet_opening_);
+}
+
 void ParticleStore::resize(std::size_t n) {
   for_each_column([n](Column& c) { c.resize(n, 0.0); });
   id_.resize(n, 0);
+  inlet_opening_.resize(n, no_inlet_opening);
 }
 
 std::size_t ParticleStore::add(const ParticleState& p) {
@@ -33,6 +43,7 @@ std::size_t ParticleStore::add(const ParticleState& p) {
   radius_[i] = p.radius_m;
   mass_[i] = p.mass_kg;
   id_[i] = p.id;
+  inlet_opening_[i] = p.inlet_opening;
   return i;
 }
 
@@ -46,33 +57,32 @@ ParticleState ParticleStore::state(std::size_t i) const {
   p.radius_m = radius_[i];
   p.mass_kg = mass_[i];
   p.id = id_[i];
+  p.inlet_opening = inlet_opening_[i];
   return p;
 }
 
 void ParticleStore::permute_owned(const std::vector<std::size_t>& order) {
   if (n_ghost() != 0 || order.size() != n_owned_) throw std::logic_error("permute_owned: ghosts present or bad order");
-  Column tmp(n_owned_);
-  for_each_column([&](Column& c) {
+  // One scratch column per element type, reused by swapping (large allocations would fault in fresh pages).
+  std::tuple<Column, std::vector<std::int64_t>, std::vector<std::int32_t>> scratch;
+  for_each_any_column([&](auto& c) {
+    auto& tmp = std::get<std::remove_reference_t<decltype(c)>>(scratch);
+    tmp.resize(n_owned_);
     for (std::size_t k = 0; k < n_owned_; ++k) tmp[k] = c[order[k]];
     c.swap(tmp);
   });
-  std::vector<std::int64_t> ids(n_owned_);
-  for (std::size_t k = 0; k < n_owned_; ++k) ids[k] = id_[order[k]];
-  id_.swap(ids);
 }
 
 std::size_t ParticleStore::remove_owned(const std::vector<bool>& remove) {
   if (remove.size() != n_owned_) throw std::logic_error("remove_owned: one flag per owned particle expected");
   clear_ghosts();
   std::size_t kept = 0;
-  for (std::size_t i = 0; i < n_owned_; ++i) {
-    if (!remove[i]) id_[kept++] = id_[i];
-  }
-  for_each_column([&](Column& c) {
+  for_each_any_column([&](auto& c) {
     std::size_t k = 0;
     for (std::size_t i = 0; i < n_owned_; ++i) {
       if (!remove[i]) c[k++] = c[i];
     }
+    kept = k;
   });
   const std::size_t removed = n_owned_ - kept;
   n_owned_ = kept;
@@ -94,6 +104,7 @@ std::size_t ParticleStore::add_ghost(std::size_t owner, const hs::common::Vec3& 
   radius_[g] = radius_[owner];
   mass_[g] = mass_[owner];
   id_[g] = id_[owner];
+  inlet_opening_[g] = inlet_opening_[owner];
   for (int a = 0; a < 3; ++a) pos_[a][g] = pos_[a][owner] + shift_m[a];
   return g;
 }

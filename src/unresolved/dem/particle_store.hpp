@@ -11,6 +11,9 @@
 
 namespace hs::unresolved {
 
+/// inlet_opening of particles not injected through an opening (volume insertion, a case's own placement).
+inline constexpr std::int32_t no_inlet_opening = -1;
+
 /// One particle as handed in by insertion or a case (SI units).
 struct ParticleState {
   hs::common::Vec3 position_m;
@@ -19,14 +22,16 @@ struct ParticleState {
   double radius_m = 0.0;
   double mass_kg = 0.0;
   std::int64_t id = 0;
+  /// Index of the opening it entered through (OpeningTraffic); no_inlet_opening for a particle placed otherwise.
+  std::int32_t inlet_opening = no_inlet_opening;
 };
 
 /// Structure of arrays. Indices [0, n_owned()) are the particles this block owns and integrates;
 /// [n_owned(), size()) are ghosts: copies of particles (periodic images here, particles of neighbour blocks
 /// once the run is distributed) that only take part in contacts. A ghost carries its owner's id; forces
 /// computed on a ghost are added back to its owner by fold_ghost_forces() (the reverse halo exchange).
-/// Per-particle coupling data (external force, drag coefficient, fluid velocity, drag impulse, lift, DI) and the
-/// wall-contact history live here too, so that sorting and (later) migration carry them along.
+/// Per-particle coupling data (external force, drag coefficient, fluid velocity, drag impulse, lift, DI), the
+/// opening a particle came in by and the wall-contact history live here too, so that sorting and (later) migration carry them along.
 class ParticleStore {
  public:
   using Column = std::vector<double>;
@@ -49,6 +54,8 @@ class ParticleStore {
   Column& radius_m() { return radius_; }
   Column& mass_kg() { return mass_; }
   std::vector<std::int64_t>& id() { return id_; }
+  /// The opening each particle entered through (index into the run's openings), or no_inlet_opening.
+  std::vector<std::int32_t>& inlet_opening() { return inlet_opening_; }
   const Vec3Columns& position_m() const { return pos_; }
   const Vec3Columns& velocity_m_s() const { return vel_; }
   const Vec3Columns& angular_velocity_rad_s() const { return omega_; }
@@ -57,6 +64,7 @@ class ParticleStore {
   const Column& radius_m() const { return radius_; }
   const Column& mass_kg() const { return mass_; }
   const std::vector<std::int64_t>& id() const { return id_; }
+  const std::vector<std::int32_t>& inlet_opening() const { return inlet_opening_; }
 
   // Coupling data (meaningful for owned particles).
   /// Constant external force and torque added every step until changed (fluid pressure, lift, gravity...).
@@ -87,7 +95,7 @@ class ParticleStore {
   const Vec3Columns& wall_shear_m() const { return wall_shear_; }
 
   /// Removes the owned particles i with remove[i] true (remove.size() == n_owned()); the others keep their order,
-  /// ids and every column (forces, coupling data, wall history). Removes all ghosts first. Returns how many went.
+  /// ids, inlet openings and every column (forces, coupling data, wall history). Removes all ghosts first. Returns how many went.
   std::size_t remove_owned(const std::vector<bool>& remove);
   /// Reorders the owned particles: new particle k is old particle order[k]. Requires no ghosts.
   void permute_owned(const std::vector<std::size_t>& order);
@@ -105,6 +113,9 @@ class ParticleStore {
  private:
   template <typename F>
   void for_each_column(F&& f);
+  /// Applies f to every column, the integer ones (id, inlet opening) included.
+  template <typename F>
+  void for_each_any_column(F&& f);
   void resize(std::size_t n);
 
   std::size_t n_owned_ = 0;
@@ -113,6 +124,7 @@ class ParticleStore {
   Vec3Columns pos_, vel_, omega_, force_, torque_;
   Column radius_, mass_;
   std::vector<std::int64_t> id_;
+  std::vector<std::int32_t> inlet_opening_;
   Vec3Columns ext_force_, ext_torque_, fluid_vel_, drag_impulse_, lift_, wall_shear_;
   Column drag_beta_, di_;
   std::vector<std::size_t> ghost_owner_;

@@ -62,7 +62,8 @@ TEST(TubePriesVtk, FramesAtTheIntervalAndContinuedByResume) {
   const std::string vtp = slurp(out / "vtk/particles_0000006.vtp");
   EXPECT_EQ(vtp.rfind("<?xml", 0), 0u);
   EXPECT_NE(vtp.find("</VTKFile>"), std::string::npos);
-  for (const char* a : {"radius_m", "velocity_m_s", "force_N", "external_force_N", "drag_force_N", "deformation_index"}) {
+  for (const char* a : {"radius_m", "velocity_m_s", "force_N", "external_force_N", "drag_force_N", "deformation_index",
+                        "inlet_opening"}) {
     EXPECT_NE(vtp.find(std::string("Name=\"") + a + "\""), std::string::npos) << a;
   }
   std::smatch m;
