@@ -23,7 +23,7 @@
 #include "bench/peak_rss.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/tube_open.hpp"
-#include "unresolved/cases/tube_open_measurement.hpp"
+#include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
 
@@ -98,7 +98,7 @@ nlohmann::json measure_open_tube(long n_cells, int repetitions) {
   const InsertionResult fill = insert_at_volume_fraction(
       run.shape(), run.dem().domain(), {.volume_fraction = hematocrit, .radius_m = c.particles.radius_m(), .seed = 1});
   for (const auto& x : fill.positions_m) run.dem().add_particle(x);   // inlet_opening -1: placed, not injected
-  TubeOpenMeasurement m(c);
+  OpenGeometryMeasurement m(open_geometry_of(c), "tube-open");
   const std::vector<std::string> columns = m.columns();
   std::vector<std::vector<double>> rows;
   std::vector<Clock::time_point> ends;   // wall clock at the end of each CFD step

@@ -70,9 +70,9 @@ TEST(MemoryRefusal, TubeCellCase) {
 }
 
 TEST(MemoryRefusal, OpenGeometryCase) {
-  // dx_m = 2e-8 (with dt_s = 2e-6 for the Courant check) over the 80 x 68 x 20 um box: 4000 x 3400 x 1000 cells,
-  // ~2.7e13 bytes.
-  expect_refused(edited_case("cases/unresolved/y-bifurcation", "dx_m            = 2e-6[^\n]*\ndt_s            = 2.0e-4",
+  // dx_m = 2e-8 (with dt_s = 2e-6 for the Courant check) over the 120 x 102 x 30 um box: 6000 x 5100 x 1500 cells,
+  // ~9e13 bytes.
+  expect_refused(edited_case("cases/unresolved/y-bifurcation", "dx_m            = 3e-6[^\n]*\ndt_s            = 2.0e-4",
                              "dx_m = 2e-8\ndt_s = 2e-6", "opengeometry"),
                  "[numerics] dx_m = 2e-08", "");
 }

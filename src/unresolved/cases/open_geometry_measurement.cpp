@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -35,7 +36,8 @@ double window_mean(const std::vector<std::vector<double>>& rows, long first, lon
 
 }  // namespace
 
-OpenGeometryMeasurement::OpenGeometryMeasurement(const OpenGeometryConfig& c) : c_(c) {
+OpenGeometryMeasurement::OpenGeometryMeasurement(const OpenGeometryConfig& c, std::string case_type)
+    : c_(c), case_type_(std::move(case_type)) {
   for (const auto& o : c.openings) openings_.push_back(o.opening);
   last_net_volume_m3_.assign(openings_.size(), 0.0);
 }

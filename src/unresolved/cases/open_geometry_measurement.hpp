@@ -25,9 +25,10 @@ namespace hs::unresolved {
 /// through its faces as the solver counts it, so its inflow's discharge hematocrit is Ht_d,k (as tube-open).
 class OpenGeometryMeasurement final : public CfdDemMeasurement {
  public:
-  explicit OpenGeometryMeasurement(const OpenGeometryConfig& c);
+  /// `case_type` names the case in checkpoints (tube-open runs on this measurement too).
+  explicit OpenGeometryMeasurement(const OpenGeometryConfig& c, std::string case_type = "open-geometry");
 
-  [[nodiscard]] std::string case_type() const override { return "open-geometry"; }
+  [[nodiscard]] std::string case_type() const override { return case_type_; }
   [[nodiscard]] std::vector<std::string> columns() const override;
   void prepare(CfdDemSolvers& run) override;
   void start(CfdDemSolvers& run) override;
@@ -43,6 +44,7 @@ class OpenGeometryMeasurement final : public CfdDemMeasurement {
   [[nodiscard]] nlohmann::json opening_summary(const std::vector<std::vector<double>>& rows, long first) const;
 
   OpenGeometryConfig c_;
+  std::string case_type_;
   std::vector<hs::common::Opening> openings_;
   std::optional<OpeningTraffic> traffic_;
   std::vector<double> last_net_volume_m3_;   // per opening: RBC volume in - out at the last sample

@@ -14,8 +14,8 @@
 #include "common/run_context.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
 #include "unresolved/cases/grid_budget.hpp"
+#include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/cases/step_limits.hpp"
-#include "unresolved/cases/tube_open_measurement.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/cell_injector.hpp"
 
@@ -73,41 +73,71 @@ TubeOpenConfig parse_tube_open(hs::common::ConfigFile& file, bool quick) {
   return c;
 }
 
-std::vector<hs::common::Opening> tube_open_openings(const TubeOpenConfig& c) {
+OpenGeometryConfig open_geometry_of(const TubeOpenConfig& c) {
   const double r = 0.5 * c.diameter_m;
-  return {{.name = "inlet", .kind = hs::common::OpeningKind::inlet, .centre_m = {0, 0, 0}, .normal = {0, 0, -1}, .radius_m = r},
-          {.name = "outlet", .kind = hs::common::OpeningKind::outlet, .centre_m = {0, 0, c.length_m}, .normal = {0, 0, 1},
-           .radius_m = r}};
+  const hs::common::Opening inlet{.name = "inlet", .kind = hs::common::OpeningKind::inlet, .centre_m = {0, 0, 0},
+                                  .normal = {0, 0, -1}, .radius_m = r};
+  const hs::common::Opening outlet{.name = "outlet", .kind = hs::common::OpeningKind::outlet, .centre_m = {0, 0, c.length_m},
+                                   .normal = {0, 0, 1}, .radius_m = r};
+  OpenGeometryConfig g{};
+  g.shape = std::make_shared<hs::common::Tube>(hs::common::TubeSpec{.start_m = {0, 0, 0}, .end_m = {0, 0, c.length_m}, .radius_m = r});
+  g.box = {{-r, -r, 0.0}, {r, r, c.length_m}};
+  g.openings = {hs::common::flow_rate_inlet(inlet, c.inlet_mean_velocity_m_s * std::numbers::pi * r * r),
+                hs::common::pressure_outlet(outlet, 0.0)};
+  g.discharge_hematocrit = {c.discharge_hematocrit, 0.0};
+  g.fluid = c.fluid;
+  g.seed = c.seed;
+  g.particles = c.particles;
+  g.model = c.model;
+  g.dx_m = c.diameter_m / c.cells_across;
+  g.dt_s = c.dt_s;
+  g.piso_correctors = c.piso_correctors;
+  g.pressure_coupling = c.pressure_coupling;
+  g.n_coupling = c.n_coupling;
+  g.end_time_s = c.end_time_s;
+  g.average_from_fraction = c.average_from_fraction;
+  g.checkpoint_every_wall_s = c.checkpoint_every_wall_s;
+  g.vtk_every_s = c.vtk_every_s;
+  g.quick = c.quick;
+  return g;
 }
 
-CfdDemSetup tube_open_setup(const TubeOpenConfig& c) {
-  const double r = 0.5 * c.diameter_m;
-  const std::vector<hs::common::Opening> openings = tube_open_openings(c);
-  const hs::common::Box3 box{{-r, -r, 0.0}, {r, r, c.length_m}};
-  FvmGridSpec grid{.box_m = box, .dx_m = c.diameter_m / c.cells_across, .sides = {}};   // walls but for the openings
-  grid.openings = {hs::common::flow_rate_inlet(openings[0], c.inlet_mean_velocity_m_s * std::numbers::pi * r * r),
-                   hs::common::pressure_outlet(openings[1], 0.0)};
-  return {.shape = std::make_unique<hs::common::Tube>(hs::common::TubeSpec{.start_m = {0, 0, 0}, .end_m = {0, 0, c.length_m},
-                                                                            .radius_m = r}),
-          .grid = grid,
-          .fluid = c.fluid,
-          .piso = {.dt_s = c.dt_s, .correctors = c.piso_correctors, .coupling = c.pressure_coupling},
-          .drive = {},
-          .dem = {.params = c.particles, .domain = {.box = box, .periodic = {false, false, false}}, .time_step_s = c.dt_s / c.n_coupling},
-          // The closures' inputs from the geometry and the local flow (channel_frame.hpp), as in any open geometry.
-          .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.model.void_fraction_rate,
-                       .closure_frame = ClosureFrame::channel, .wall_correction = c.model.wall_correction,
-                       .suspension_viscosity = c.model.suspension_viscosity},
-          .closures = make_closures(c.model)};
-}
+CfdDemSetup tube_open_setup(const TubeOpenConfig& c) { return open_geometry_setup(open_geometry_of(c)); }
 
 nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<void(const std::vector<double>&)>& on_row,
                                   const CfdDemRestart& restart) {
-  CfdDemSolvers run(tube_open_setup(c));
-  TubeOpenMeasurement m(c);
+  const OpenGeometryConfig g = open_geometry_of(c);
+  CfdDemSolvers run(open_geometry_setup(g));
+  OpenGeometryMeasurement m(g, "tube-open");
   return run_cfd_dem(run, m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .restart = restart,
                               .on_row = on_row, .after_step = {}, .progress = nullptr})
       .summary;
+}
+
+void add_tube_summary(const TubeOpenConfig& c, nlohmann::json& s) {
+  const double ht_in = s["openings"][0]["discharge_hematocrit"].get<double>();    // "inlet", "outlet": names sorted
+  const double ht_out = s["openings"][1]["discharge_hematocrit"].get<double>();
+  const double ht_tube = s["domain_hematocrit"].get<double>();
+  s["diameter_um"] = c.diameter_m * 1e6;
+  s["length_um"] = c.length_m * 1e6;
+  s["discharge_hematocrit_requested"] = c.discharge_hematocrit;
+  s["transits"] = s["residence_times"];   // the tube's volume over its inflow: L / U
+  s["discharge_hematocrit_inlet"] = ht_in;
+  s["discharge_hematocrit_outlet"] = ht_out;
+  s["outlet_vs_inlet_discharge_pct"] = ht_in > 0.0 ? 100.0 * (ht_out - ht_in) / ht_in : 0.0;
+  s["tube_hematocrit"] = ht_tube;
+  s["tube_over_discharge_hematocrit"] = ht_in > 0.0 ? ht_tube / ht_in : 0.0;   // < 1: the Fahraeus effect
+}
+
+void check_tube_open(const TubeOpenConfig& c, const nlohmann::json& s, hs::common::CheckList& checks) {
+  check_open_geometry(open_geometry_of(c), s, checks);
+  if (c.quick) return;   // open-geometry's checks said so
+  // #21's acceptance: what goes in comes out (2%), and the tube hematocrit below the discharge one (Fahraeus).
+  const double diff = s["outlet_vs_inlet_discharge_pct"].get<double>();
+  checks.expect("outlet vs inlet discharge hematocrit", std::abs(diff) <= 2.0, fmt::format("{:+.2f}% (band +-2%)", diff));
+  const double fahraeus = s["tube_over_discharge_hematocrit"].get<double>();
+  checks.expect("Fahraeus: tube hematocrit below the inlet's discharge hematocrit", fahraeus < 1.0,
+                fmt::format("Ht_T / Ht_d = {:.4f}", fahraeus));
 }
 
 int run_tube_open(const hs::common::CaseRequest& request) {
@@ -121,10 +151,12 @@ int run_tube_open(const hs::common::CaseRequest& request) {
   ctx.log().info("tube-open: D = {:.4g} m, L = {:.4g} m, inlet U = {:.4g} m/s, Ht_d = {:.3g}, {} cells across, dt = {:.4g} s, "
                  "n_coupling = {}, {:.1f} transits", c.diameter_m, c.length_m, c.inlet_mean_velocity_m_s, c.discharge_hematocrit,
                  c.cells_across, c.dt_s, c.n_coupling, c.end_time_s / c.transit_time_s());
-  CfdDemSolvers run(tube_open_setup(c));
-  TubeOpenMeasurement m(c);
-  const CfdDemOutcome out = run_cfd_dem_in_folder(
+  const OpenGeometryConfig g = open_geometry_of(c);
+  CfdDemSolvers run(open_geometry_setup(g));
+  OpenGeometryMeasurement m(g, "tube-open");
+  CfdDemOutcome out = run_cfd_dem_in_folder(
       ctx, run, m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .vtk_every_s = c.vtk_every_s});
+  add_tube_summary(c, out.summary);
   hs::common::CheckList checks;
   check_tube_open(c, out.summary, checks);
   ctx.log().info("tube-open: Ht_d inlet {:.4f}, outlet {:.4f}, tube Ht_T {:.4f}; {} cells in, {} out, {} present; outputs in {}",

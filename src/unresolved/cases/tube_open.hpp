@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Case type "tube-open": RBC spheres injected at the inlet of a straight open tube (flow-rate inlet at z = 0,
-// pressure outlet at z = L) and removed at its outlet, on the CFD-DEM skeleton.
+// pressure outlet at z = L) and removed at its outlet: an open geometry (open_geometry.hpp) with a tube's few keys
+// and two checks of its own (what goes in comes out; Fahraeus).
 #pragma once
 
 #include <cstdint>
@@ -10,10 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "common/case_request.hpp"
+#include "common/check_list.hpp"
 #include "common/config/config_file.hpp"
-#include "common/geometry/opening.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/coupling_model.hpp"
+#include "unresolved/cases/open_geometry.hpp"
 #include "unresolved/dem/particle_params.hpp"
 
 namespace hs::unresolved {
@@ -48,11 +50,11 @@ struct TubeOpenConfig {
 /// t_Hertz). --quick: 20 CFD steps.
 [[nodiscard]] TubeOpenConfig parse_tube_open(hs::common::ConfigFile& file, bool quick);
 
-/// The tube's two openings: "inlet" (the disc at z = 0) and "outlet" (at z = L), each of the tube's radius.
-[[nodiscard]] std::vector<hs::common::Opening> tube_open_openings(const TubeOpenConfig& c);
+/// The tube as an open geometry: a Tube along z from 0 to L in the box around it, the openings "inlet" (the disc at
+/// z = 0: flow rate pi R^2 U, Ht_d) and "outlet" (at z = L: 0 Pa), and the same numerics.
+[[nodiscard]] OpenGeometryConfig open_geometry_of(const TubeOpenConfig& c);
 
-/// The open tube along z: shape, grid (flow-rate inlet and pressure outlet at its openings), DEM domain, coupling
-/// (closures in the channel frame).
+/// The open tube's solvers (open_geometry_setup of open_geometry_of).
 [[nodiscard]] CfdDemSetup tube_open_setup(const TubeOpenConfig& c);
 
 /// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says.
@@ -60,7 +62,16 @@ struct TubeOpenConfig {
 [[nodiscard]] nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<void(const std::vector<double>&)>& on_row,
                                                 const CfdDemRestart& restart = {});
 
-/// `hemoscale run` entry: exit 0 when the case's checks pass (tube_open_measurement.hpp), 1 otherwise.
+/// tube-open's own summary values from open-geometry's: discharge_hematocrit_inlet and _outlet,
+/// outlet_vs_inlet_discharge_pct, tube_hematocrit (the domain's), tube_over_discharge_hematocrit (< 1: Fahraeus),
+/// transits (= residence times, L / U), diameter_um, length_um, discharge_hematocrit_requested.
+void add_tube_summary(const TubeOpenConfig& c, nlohmann::json& summary);
+
+/// open-geometry's checks, and at steady state (not --quick) the outlet's discharge hematocrit within 2% of the inlet's
+/// and the tube hematocrit below the inlet's discharge hematocrit (Fahraeus).
+void check_tube_open(const TubeOpenConfig& c, const nlohmann::json& summary, hs::common::CheckList& checks);
+
+/// `hemoscale run` entry: exit 0 when the case's checks pass, 1 otherwise.
 int run_tube_open(const hs::common::CaseRequest& request);
 
 }  // namespace hs::unresolved

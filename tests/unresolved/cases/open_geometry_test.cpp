@@ -85,11 +85,11 @@ TEST(OpenGeometryCase, BadOpeningsAndHematocritsNameTheirKey) {
   const Case cases[] = {
       {"discharge_hematocrit = 0.20", "", "discharge_hematocrit"},
       {"discharge_hematocrit = 0.20", "discharge_hematocrit = 0.7", "discharge_hematocrit"},
-      {"radius_m = 8e-6\npressure_Pa = 0.0\n\n[openings.lower]",
-       "radius_m = 8e-6\npressure_Pa = 0.0\ndischarge_hematocrit = 0.2\n\n[openings.lower]", "discharge_hematocrit"},
+      {"radius_m = 12e-6\npressure_Pa = 0.0\n\n[openings.lower]",
+       "radius_m = 12e-6\npressure_Pa = 0.0\ndischarge_hematocrit = 0.2\n\n[openings.lower]", "discharge_hematocrit"},
       // Between the daughters: wall material, not an opening.
-      {"centre_m = [80e-6, 23.0940108e-6, 0.0]", "centre_m = [80e-6, 0.0, 0.0]", "centre_m"},
-      {"radius_m = 8e-6\npressure_Pa = 0.0\n\n[openings.lower]", "radius_m = 8e-6\n\n[openings.lower]", "pressure_Pa"},
+      {"centre_m = [120e-6, 34.6410162e-6, 0.0]", "centre_m = [120e-6, 0.0, 0.0]", "centre_m"},
+      {"radius_m = 12e-6\npressure_Pa = 0.0\n\n[openings.lower]", "radius_m = 12e-6\n\n[openings.lower]", "pressure_Pa"},
   };
   for (const Case& c : cases) {
     const std::string error = parse_error(edited(c.from, c.to));
