@@ -130,11 +130,12 @@ int run_tube_open(const hs::common::CaseRequest& request) {
   const CfdDemOutcome out = run_cfd_dem_in_folder(
       ctx, run, m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .vtk_every_s = c.vtk_every_s});
   hs::common::CheckList checks;
-  check_tube_open(c, out.summary, checks);
+  const nlohmann::json& res = out.summary["results"];
+  check_tube_open(c, res, checks);
   ctx.log().info("tube-open: Ht_d inlet {:.4f}, outlet {:.4f}, tube Ht_T {:.4f}; {} cells in, {} out, {} present; outputs in {}",
-                 out.summary["discharge_hematocrit_inlet"].get<double>(), out.summary["discharge_hematocrit_outlet"].get<double>(),
-                 out.summary["tube_hematocrit"].get<double>(), out.summary["cells_injected"].get<long>(),
-                 out.summary["cells_removed"].get<long>(), out.summary["cells_present"].get<long>(), ctx.folder().path().string());
+                 res["discharge_hematocrit_inlet"].get<double>(), res["discharge_hematocrit_outlet"].get<double>(),
+                 res["tube_hematocrit"].get<double>(), res["cells_injected"].get<long>(), res["cells_removed"].get<long>(),
+                 res["cells_present"].get<long>(), ctx.folder().path().string());
   return finish_cfd_dem_case(ctx, out.summary, checks, "tube-open");
 }
 

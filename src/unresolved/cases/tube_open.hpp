@@ -51,7 +51,7 @@ struct TubeOpenConfig {
 [[nodiscard]] CfdDemSetup tube_open_setup(const TubeOpenConfig& c);
 
 /// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says.
-/// Returns summary.json's content without the checks.
+/// Returns summary.json's blocks (results, groups, numerics, timings), without the checks.
 [[nodiscard]] nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<void(const std::vector<double>&)>& on_row,
                                                 const CfdDemRestart& restart = {});
 

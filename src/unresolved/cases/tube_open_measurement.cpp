@@ -147,32 +147,34 @@ nlohmann::json TubeOpenMeasurement::summary(const CfdDemSolvers& run, const std:
   const double r = 0.5 * c_.diameter_m;
   const double u = c_.inlet_mean_velocity_m_s;
   nlohmann::json j;
-  j["diameter_um"] = c_.diameter_m * 1e6;
-  j["length_um"] = c_.length_m * 1e6;
-  j["discharge_hematocrit_requested"] = c_.discharge_hematocrit;
-  j["transits"] = static_cast<double>(rows.size()) * dt / c_.transit_time_s();
-  j["cells_injected"] = traffic_->cells_injected();
-  j["cells_removed"] = traffic_->cells_removed();
-  j["cells_removed_outlet"] = out.cells_out;
-  j["cells_removed_inlet_backflow"] = in.cells_out;
-  j["cells_present"] = static_cast<long>(run.dem().particles().n_owned());
-  j["bookkeeping_exact_every_step"] = exact;
-  j["rbc_volume_injected_m3"] = in.rbc_volume_in_m3;
-  j["rbc_volume_owed_m3"] = owed;   // Ht_d x the blood volume that came in, sum of Q_b dt
-  j["injected_over_owed"] = owed > 0.0 ? in.rbc_volume_in_m3 / owed : 0.0;
-  j["flow_rate_blood_inlet_m3_s"] = (w.rbc_m3[0] + w.fluid_m3[0]) / (static_cast<double>(w.samples) * dt);
-  j["flow_rate_blood_outlet_m3_s"] = (w.rbc_m3[1] + w.fluid_m3[1]) / (static_cast<double>(w.samples) * dt);
-  j["discharge_hematocrit_inlet"] = ht_in;
-  j["discharge_hematocrit_outlet"] = ht_out;
-  j["outlet_vs_inlet_discharge_pct"] = 100.0 * (ht_out - ht_in) / ht_in;
-  j["tube_hematocrit"] = w.tube_ht;
-  j["tube_over_discharge_hematocrit"] = w.tube_ht / ht_in;   // < 1: the Fahraeus effect
-  j["tube_hematocrit_change_between_averaging_halves"] = w.tube_ht_half[1] - w.tube_ht_half[0];
-  j["averaged_steps"] = w.samples;
-  j["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
-  write_model_summary(c_.model, j);
-  j["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
-  j["piso_correctors"] = c_.piso_correctors;
+  nlohmann::json& res = j["results"];
+  nlohmann::json& num = j["numerics"];
+  res["diameter_um"] = c_.diameter_m * 1e6;
+  res["length_um"] = c_.length_m * 1e6;
+  res["discharge_hematocrit_requested"] = c_.discharge_hematocrit;
+  res["transits"] = static_cast<double>(rows.size()) * dt / c_.transit_time_s();
+  res["cells_injected"] = traffic_->cells_injected();
+  res["cells_removed"] = traffic_->cells_removed();
+  res["cells_removed_outlet"] = out.cells_out;
+  res["cells_removed_inlet_backflow"] = in.cells_out;
+  res["cells_present"] = static_cast<long>(run.dem().particles().n_owned());
+  res["bookkeeping_exact_every_step"] = exact;
+  res["rbc_volume_injected_m3"] = in.rbc_volume_in_m3;
+  res["rbc_volume_owed_m3"] = owed;   // Ht_d x the blood volume that came in, sum of Q_b dt
+  res["injected_over_owed"] = owed > 0.0 ? in.rbc_volume_in_m3 / owed : 0.0;
+  res["flow_rate_blood_inlet_m3_s"] = (w.rbc_m3[0] + w.fluid_m3[0]) / (static_cast<double>(w.samples) * dt);
+  res["flow_rate_blood_outlet_m3_s"] = (w.rbc_m3[1] + w.fluid_m3[1]) / (static_cast<double>(w.samples) * dt);
+  res["discharge_hematocrit_inlet"] = ht_in;
+  res["discharge_hematocrit_outlet"] = ht_out;
+  res["outlet_vs_inlet_discharge_pct"] = 100.0 * (ht_out - ht_in) / ht_in;
+  res["tube_hematocrit"] = w.tube_ht;
+  res["tube_over_discharge_hematocrit"] = w.tube_ht / ht_in;   // < 1: the Fahraeus effect
+  res["tube_hematocrit_change_between_averaging_halves"] = w.tube_ht_half[1] - w.tube_ht_half[0];
+  num["averaged_steps"] = w.samples;
+  res["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
+  write_model_summary(c_.model, num);
+  num["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
+  num["piso_correctors"] = c_.piso_correctors;
   const double nu = c_.fluid.kinematic_viscosity_m2_s;
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c_.fluid.density_kg_m3, c_.diameter_m, 2.0 * u,
                                                                    c_.fluid.dynamic_viscosity_Pa_s())},
