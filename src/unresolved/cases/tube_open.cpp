@@ -132,10 +132,10 @@ int run_tube_open(const hs::common::CaseRequest& request) {
   hs::common::CheckList checks;
   const nlohmann::json& res = out.summary["results"];
   check_tube_open(c, res, checks);
-  ctx.log().info("tube-open: Ht_d inlet {:.4f}, outlet {:.4f}, tube Ht_T {:.4f}; {} cells in, {} out, {} present; outputs in {}",
-                 res["discharge_hematocrit_inlet"].get<double>(), res["discharge_hematocrit_outlet"].get<double>(),
-                 res["tube_hematocrit"].get<double>(), res["cells_injected"].get<long>(), res["cells_removed"].get<long>(),
-                 res["cells_present"].get<long>(), ctx.folder().path().string());
+  ctx.log().result("tube-open: Ht_d inlet {:.4f}, outlet {:.4f}, tube Ht_T {:.4f}; {} cells in, {} out, {} present; outputs in {}",
+                   res["discharge_hematocrit_inlet"].get<double>(), res["discharge_hematocrit_outlet"].get<double>(),
+                   res["tube_hematocrit"].get<double>(), res["cells_injected"].get<long>(), res["cells_removed"].get<long>(),
+                   res["cells_present"].get<long>(), ctx.folder().path().string());
   return finish_cfd_dem_case(ctx, out.summary, checks, "tube-open");
 }
 
