@@ -84,7 +84,7 @@ Sample run_once(const fs::path& dir, double max_time_s) {
   (void)hs::resolved::run_tube_cell(request);
   std::ifstream in(dir / "out" / "summary.json");
   const auto summary = nlohmann::json::parse(in);
-  const auto& t = summary.at("stage_timings");
+  const auto& t = summary.at("timings");
   double total = 0.0;
   for (const auto& [name, stage] : t.items()) total += stage.at("seconds").get<double>();
   auto share = [&](std::initializer_list<const char*> names) {
@@ -92,7 +92,8 @@ Sample run_once(const fs::path& dir, double max_time_s) {
     for (const char* n : names) s += t.contains(n) ? t.at(n).at("seconds").get<double>() : 0.0;
     return s / total;
   };
-  return {summary.at("wall_s_per_simulated_ms").get<double>(), 1e3 * total / summary.at("steps").get<double>(),
+  const auto& numerics = summary.at("numerics");
+  return {numerics.at("wall_s_per_simulated_ms").get<double>(), 1e3 * total / numerics.at("steps").get<double>(),
           share({"lbm_stream_collide", "halo_exchange", "lbm_boundaries", "body_force_ramp"}),
           share({"ibm_forcing", "markers_advect", "force_accumulate"}), share({"membrane_solve"})};
 }

@@ -25,7 +25,8 @@ def read_run(run_dir):
     summary_path = os.path.join(run_dir, "summary.json")
     if os.path.exists(summary_path):   # a run still going has no summary yet: its setup is in its resolved case
         with open(summary_path) as f:
-            setup = json.load(f).get("setup", "")
+            summary = json.load(f)   # results.setup; at the top level in runs archived before schema 1
+            setup = summary.get("results", {}).get("setup", summary.get("setup", ""))
     if not setup:
         with open(os.path.join(run_dir, "case.resolved.toml")) as f:
             setup = "drag" if re.search(r'^\s*setup\s*=\s*["\']drag["\']', f.read(), re.M) else "lift"

@@ -31,7 +31,7 @@ def main():
     period_ms = 1e3 * float(res.get("period_s", 0.0) or 0.0)
     what = "period average" if periods > 0 else "mean (no whole period detected)"
     t_ms = [1e3 * float(r["time_s"]) for r in rows]
-    setup = summary.get("setup", "")
+    setup = res.get("setup", summary.get("setup", ""))   # results.setup; top level in runs archived before schema 1
     force = ("cl", "cl_mean", "C_l") if setup == "lift" else ("cd", "cd_mean", "C_d")
     fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
     for ax, key, mean_key, label in ((axes[0],) + force, (axes[1], "di", "di_mean", "DI")):

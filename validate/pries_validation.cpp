@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "closures/named_closure_set.hpp"
 #include "common/check_list.hpp"
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
@@ -43,7 +44,7 @@ fs::path first_toml(const fs::path& dir) {
 /// The model validated unless told otherwise: the closures learned from the resolved campaign (as the committed
 /// tube-pries case) with blood's bulk viscosity law. `--closures schiller_naumann --suspension-viscosity none` is
 /// the rigid-sphere baseline.
-const std::string kDefaultClosures = (fs::path(HS_SOURCE_DIR) / "data/closures/resolved").string();
+const std::string kDefaultClosures = "resolved";   // the committed set, found as `drag = "resolved"` is (closures.md)
 constexpr const char* kDefaultViscosity = "pries_bulk";
 
 void select_closures(const std::string& choice, TubePriesConfig& c) {
@@ -51,6 +52,13 @@ void select_closures(const std::string& choice, TubePriesConfig& c) {
   c.lift = closure_spec_from("none");
   c.deformation = closure_spec_from("none");
   if (choice.empty()) return;
+  if (hs::closures::is_closure_set(choice)) {   // a committed set by name: all three, as its folder would give
+    c.drag = closure_spec_from(hs::closures::named_closure_file(choice, hs::closures::ClosureKind::drag).string());
+    c.lift = closure_spec_from(hs::closures::named_closure_file(choice, hs::closures::ClosureKind::lift).string());
+    c.deformation =
+        closure_spec_from(hs::closures::named_closure_file(choice, hs::closures::ClosureKind::deformation).string());
+    return;
+  }
   if (fs::is_directory(choice)) {
     const fs::path drag = first_toml(fs::path(choice) / "drag_coefficient");
     if (drag.empty()) throw hs::common::ConfigError(fmt::format("--closures {}: no drag_coefficient/*.toml in the folder", choice));
@@ -134,9 +142,11 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
       fmt::print("pries: D = {:5.1f} um Ht_c = {:.2f}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
                  d_um, ht, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
       std::fflush(stdout);   // one line per tube as it finishes, also into a log file (the table takes ~16 min)
-      csv->row({d_um, ht, r.summary["tube_hematocrit"].get<double>(), r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries,
-               r.mu_rel_error_pct, r.summary["rbc_count"].get<double>(), r.summary["steady"].get<bool>() ? 1.0 : 0.0});
-      nlohmann::json row = r.summary;
+      csv->row({d_um, ht, r.summary["results"]["tube_hematocrit"].get<double>(), r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries,
+               r.mu_rel_error_pct, r.summary["results"]["rbc_count"].get<double>(), r.summary["results"]["steady"].get<bool>() ? 1.0 : 0.0});
+      nlohmann::json row = r.summary["results"];   // one flat row per tube: results, model choices, groups
+      row.update(r.summary["numerics"]);
+      row["groups"] = r.summary["groups"];
       row["n_coupling"] = c.n_coupling;
       row["dt_s"] = c.dt_s;
       row["end_time_s"] = c.end_time_s;

@@ -24,7 +24,7 @@ void check_tube_pries(const TubePriesConfig& c, const TubePriesResult& r, const 
   const double mu = c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s;
   const double radius = 0.5 * c.diameter_m;
   const double q_poiseuille = std::numbers::pi * std::pow(radius, 4) * std::abs(c.pressure_gradient_Pa_m) / (8.0 * mu);
-  const double q_plasma = r.summary["flow_rate_plasma_only_m3_s"].get<double>();
+  const double q_plasma = r.summary["results"]["flow_rate_plasma_only_m3_s"].get<double>();
   const double plasma_err = 100.0 * (q_plasma - q_poiseuille) / q_poiseuille;
   const double plasma_band = plasma_band_pct(c.cells_across) / options.tighten;
   checks.expect(tube + ": plasma flow vs Poiseuille", std::abs(plasma_err) <= plasma_band,
@@ -35,10 +35,10 @@ void check_tube_pries(const TubePriesConfig& c, const TubePriesResult& r, const 
     checks.skip(tube + ": steady, Ht_d and mu_rel vs Pries", "--quick: a run far shorter than the ~1 s the cell-free layer needs");
     return;
   }
-  const bool steady = r.summary["steady"].get<bool>();
+  const bool steady = r.summary["results"]["steady"].get<bool>();
   checks.expect(tube + ": steady", steady,
                 fmt::format("Ht_d moved {:+.4f} between the averaging window's halves (tolerance {:.0f}%)",
-                            r.summary["ht_d_change_between_averaging_halves"].get<double>(), 100.0 * c.steady_tolerance));
+                            r.summary["results"]["ht_d_change_between_averaging_halves"].get<double>(), 100.0 * c.steady_tolerance));
   const double band = kPriesBandPct / options.tighten;
   checks.expect(tube + ": Ht_d vs Pries", std::abs(r.ht_d_error_pct) <= band,
                 fmt::format("{:+.1f}% (band +-{:.2g}%){}", r.ht_d_error_pct, band, steady ? "" : ", not steady"));

@@ -41,9 +41,9 @@ int run_tube_pries(const hs::common::CaseRequest& request) {
   add_pries_comparison(c, r);
   hs::common::CheckList checks;
   check_tube_pries(c, r, {.quick = request.quick}, checks);
-  log.info("Ht_d = {:.4f} (Pries {:.4f}, {:+.1f}%), mu_rel = {:.4f} (Pries {:.4f}, {:+.1f}%){}; outputs in {}", r.ht_d,
-           r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct,
-           request.quick ? " (--quick: not a comparison, the run is far from steady)" : "", ctx.folder().path().string());
+  log.result("Ht_d = {:.4f} (Pries {:.4f}, {:+.1f}%), mu_rel = {:.4f} (Pries {:.4f}, {:+.1f}%){}; outputs in {}", r.ht_d,
+             r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct,
+             request.quick ? " (--quick: not a comparison, the run is far from steady)" : "", ctx.folder().path().string());
   return finish_cfd_dem_case(ctx, r.summary, checks, "tube-pries");
 }
 

@@ -154,7 +154,8 @@ CampaignSpec read_campaign_spec(const std::filesystem::path& dir) {
   auto columns = d.section("columns");
   for (const auto& name : columns.keys()) {
     auto col = columns.section(name);
-    DatasetColumn dc{name, col.string("pointer"), col.string_or("only_axis", ""), col.string_or("only_value", "")};
+    DatasetColumn dc{name, col.string("pointer"), col.string_or("only_axis", ""), col.string_or("only_value", ""),
+                     col.string_or("pointer_before_schema_1", "")};
     if (!dc.only_axis.empty() &&
         std::none_of(spec.axes.begin(), spec.axes.end(), [&](const GridAxis& a) { return a.name == dc.only_axis; })) {
       col.fail("only_axis", "is not a [grid] axis");

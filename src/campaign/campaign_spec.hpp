@@ -22,12 +22,14 @@ struct GridAxis {
 };
 
 /// One dataset column: a number taken from each run's summary.json at `json_pointer` ("/results/di_mean"),
-/// from the runs whose axis `only_axis` has the value `only_value` (empty: any run of the row).
+/// from the runs whose axis `only_axis` has the value `only_value` (empty: any run of the row). A run archived before
+/// summary.json's schema 1 (no `schema_version`) is read at `pointer_before_schema_1` when that is given ("/dx_m").
 struct DatasetColumn {
   std::string name;
   std::string json_pointer;
   std::string only_axis;
   std::string only_value;
+  std::string pointer_before_schema_1;
 };
 
 /// An exception to the template for part of the grid, with its reason: the runs whose axes have all the values in

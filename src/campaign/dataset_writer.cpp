@@ -14,8 +14,10 @@
 namespace hs::campaign {
 namespace {
 
-std::string cell(const nlohmann::json& summary, const std::string& pointer) {
-  const nlohmann::json::json_pointer p(pointer);
+std::string cell(const nlohmann::json& summary, const DatasetColumn& col) {
+  const bool before_schema_1 = summary.is_object() && !summary.contains("schema_version");
+  const nlohmann::json::json_pointer p(before_schema_1 && !col.pointer_before_schema_1.empty() ? col.pointer_before_schema_1
+                                                                                                  : col.json_pointer);
   if (!summary.contains(p)) return "";
   const auto& v = summary.at(p);
   if (v.is_number()) return fmt::format("{:.10g}", v.get<double>());
@@ -66,7 +68,7 @@ int write_dataset(const CampaignSpec& spec, const std::vector<RunRecord>& runs) 
           match = spec.axes[a].name == col.only_axis && to_text(members[m].first->values[a]) == col.only_value;
         }
         if (match && !summaries[m].is_discarded()) {
-          value = cell(summaries[m], col.json_pointer);
+          value = cell(summaries[m], col);
           break;
         }
       }

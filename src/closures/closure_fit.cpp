@@ -17,6 +17,7 @@
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/run_folder.hpp"
+#include "common/summary_schema.hpp"
 #include "regression/compiled_program.hpp"
 #include "regression/infix.hpp"
 
@@ -172,12 +173,16 @@ ClosureFile run_fit(const FitRequest& request, const std::filesystem::path& out_
                         .string();
   closure.write(out_dir / (request.name + ".toml"));
   write_tables(out_dir, request, table, model, closure);
-  nlohmann::json summary{{"name", closure.name},        {"kind", closure.kind},
-                         {"expression", closure.expression}, {"fit", closure.fit},
-                         {"seconds", seconds},          {"dataset", closure.dataset},
-                         {"dataset_sha256", closure.dataset_sha256}, {"seed", closure.seed},
-                         {"threads", closure.threads},  {"provenance", hs::common::provenance()}};
-  hs::common::write_json(out_dir / "summary.json", summary);
+  // summary.json in the layout of every run (common/summary_schema.hpp): the closure found, how it was searched.
+  const nlohmann::json blocks{
+      {"results", {{"name", closure.name}, {"kind", closure.kind}, {"expression", closure.expression}, {"fit", closure.fit}}},
+      {"numerics", {{"dataset", closure.dataset}, {"dataset_sha256", closure.dataset_sha256}, {"seed", closure.seed},
+                    {"threads", closure.threads}}},
+      {"timings", {{"search", {{"seconds", seconds}, {"calls", 1}, {"share", 1.0}}}}}};
+  hs::common::write_json(out_dir / "summary.json",
+                         hs::common::assemble_summary(blocks, {}, {.case_type = "fit", .quick = false, .mpi_ranks = 1,
+                                                                   .wall_time_s = seconds,
+                                                                   .provenance = hs::common::provenance()}));
   if (!quiet) {
     fmt::print("{} = {}\n  R2 train {:.6f}, cv {:.6f}, test {:.6f}; {} generations, {:.1f} s\n", closure.output,
                closure.expression, model.train.r2, model.cv.r2, model.test.r2, model.search.generations_run, seconds);

@@ -3,6 +3,8 @@
 #include "closures/named_closure_set.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -28,6 +30,27 @@ const std::vector<std::string>& closure_set_names() {
   return names;
 }
 
+std::vector<std::filesystem::path> closure_data_dirs() {
+  std::vector<std::filesystem::path> dirs;
+  if (const char* env = std::getenv("HS_DATA_DIR"); env != nullptr && *env != '\0') dirs.emplace_back(env);
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) dirs.push_back(exe.parent_path().parent_path() / "share" / "hemoscale" / "data");
+  dirs.emplace_back(HS_SOURCE_DATA_DIR);
+  return dirs;
+}
+
+std::filesystem::path closure_set_dir(const std::string& name) {
+  std::string looked;
+  for (const auto& data : closure_data_dirs()) {
+    const std::filesystem::path dir = data / "closures" / name;
+    if (std::filesystem::is_directory(dir)) return dir;
+    looked += (looked.empty() ? "" : ", ") + dir.string();
+  }
+  throw hs::common::ConfigError(fmt::format("closure set \"{}\" not found; looked in {} (set HS_DATA_DIR to the folder "
+                                            "holding closures/, or give the closure file's path)", name, looked));
+}
+
 bool is_closure_set(const std::string& name) {
   const auto& n = closure_set_names();
   return std::find(n.begin(), n.end(), name) != n.end();
@@ -35,7 +58,7 @@ bool is_closure_set(const std::string& name) {
 
 std::filesystem::path named_closure_file(const std::string& name, ClosureKind kind) {
   if (!is_closure_set(name)) throw hs::common::ConfigError(fmt::format("\"{}\" is not a committed closure set", name));
-  const std::filesystem::path dir = std::filesystem::path(HS_CLOSURE_DATA_DIR) / name / kind_folder(kind);
+  const std::filesystem::path dir = closure_set_dir(name) / kind_folder(kind);
   std::vector<std::filesystem::path> files;
   if (std::filesystem::is_directory(dir)) {
     for (const auto& e : std::filesystem::directory_iterator(dir)) {

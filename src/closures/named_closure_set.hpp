@@ -16,6 +16,12 @@ enum class ClosureKind { drag, lift, deformation };
 /// kind: drag_coefficient/, lift_coefficient/, deformation_index/.
 [[nodiscard]] const std::vector<std::string>& closure_set_names();
 [[nodiscard]] bool is_closure_set(const std::string& name);
+/// The data folders searched for the committed sets, in order (docs/closures.md, "Named closure sets"): $HS_DATA_DIR,
+/// then share/hemoscale/data beside the executable's bin/ (an installed hemoscale), then the source tree's data/ it
+/// was built from. The first that holds closures/NAME wins.
+[[nodiscard]] std::vector<std::filesystem::path> closure_data_dirs();
+/// The folder of set `name` (DATA/closures/NAME): ConfigError listing every place looked when none holds it.
+[[nodiscard]] std::filesystem::path closure_set_dir(const std::string& name);
 /// The closure file of `kind` in set `name`: the first *.toml (by name) in its kind folder. ConfigError naming the
 /// folder when the set is unknown or the folder holds no closure file.
 [[nodiscard]] std::filesystem::path named_closure_file(const std::string& name, ClosureKind kind);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "common/log.hpp"
+
 namespace hs::common {
 
 const char* check_status_name(CheckStatus s) {
@@ -33,16 +35,27 @@ int CheckList::skipped() const {
   return static_cast<int>(std::count_if(checks_.begin(), checks_.end(), [](const Check& c) { return c.status == CheckStatus::skipped; }));
 }
 
-void CheckList::print(const std::string& what) const {
+std::vector<std::string> CheckList::lines(const std::string& what) const {
+  std::vector<std::string> out;
   for (const Check& c : checks_) {
     if (c.status == CheckStatus::passed) continue;
-    fmt::print("  {} {}: {}\n", c.status == CheckStatus::failed ? "FAILED " : "skipped", c.name, c.detail);
+    out.push_back(fmt::format("  {} {}: {}", c.status == CheckStatus::failed ? "FAILED " : "skipped", c.name, c.detail));
   }
   const int n_failed = failed();
   const int n_skipped = skipped();
   const int n_passed = static_cast<int>(checks_.size()) - n_failed - n_skipped;
-  fmt::print("{}: {} of {} checks passed, {} failed, {} skipped\n", what, n_passed, checks_.size(), n_failed, n_skipped);
+  out.push_back(fmt::format("{}: {} of {} checks passed, {} failed, {} skipped", what, n_passed, checks_.size(), n_failed,
+                            n_skipped));
+  return out;
+}
+
+void CheckList::print(const std::string& what) const {
+  for (const std::string& line : lines(what)) fmt::print("{}\n", line);
   std::fflush(stdout);
+}
+
+void CheckList::print(Log& log, const std::string& what) const {
+  for (const std::string& line : lines(what)) log.result("{}", line);
 }
 
 void CheckList::write_to(nlohmann::json& result) const {

@@ -11,6 +11,8 @@
 
 namespace hs::common {
 
+class Log;
+
 enum class CheckStatus { passed, failed, skipped };
 
 struct Check {
@@ -34,10 +36,13 @@ class CheckList {
 
   /// One line per failed and skipped check, then "<what>: N of M checks passed, N failed, N skipped" (stdout).
   void print(const std::string& what) const;
+  /// The same lines as result lines of a run's log: stdout with the log's prefix ("[--quick] "), and log.txt.
+  void print(Log& log, const std::string& what) const;
   /// {"checks": [{name, status, detail}], "passed": bool, "checks_failed": N, "checks_skipped": N}
   void write_to(nlohmann::json& result) const;
 
  private:
+  [[nodiscard]] std::vector<std::string> lines(const std::string& what) const;
   std::vector<Check> checks_;
 };
 

@@ -5,8 +5,10 @@
 #include <mpi.h>
 
 #include <string>
+#include <utility>
 
 #include "common/errors.hpp"
+#include "common/summary_schema.hpp"
 
 namespace hs::common {
 
@@ -66,14 +68,13 @@ double RunContext::wall_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-void RunContext::write_summary(nlohmann::json summary) const {
-  if (rank_ != 0) return;
-  summary["case_type"] = case_type_;
-  summary["mpi_ranks"] = ranks_;
-  summary["wall_time_s"] = wall_seconds();
-  summary["quick"] = quick_;
-  summary["provenance"] = provenance();
-  write_json(folder_->file("summary.json"), summary);
+nlohmann::json RunContext::write_summary(nlohmann::json blocks, const CheckList& checks) const {
+  const nlohmann::json summary =
+      assemble_summary(std::move(blocks), checks,
+                       {.case_type = case_type_, .quick = quick_, .mpi_ranks = ranks_, .wall_time_s = wall_seconds(),
+                        .provenance = provenance()});
+  if (rank_ == 0) write_json(folder_->file("summary.json"), summary);
+  return summary;
 }
 
 }  // namespace hs::common

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/case_request.hpp"
+#include "common/check_list.hpp"
 #include "common/log.hpp"
 #include "common/run_folder.hpp"
 
@@ -31,8 +32,10 @@ class RunContext {
   [[nodiscard]] bool show_progress() const { return show_progress_ && rank_ == 0; }
   [[nodiscard]] double wall_seconds() const;
 
-  /// Adds provenance, case type, ranks, wall time and `quick` to `summary` and writes summary.json (rank 0).
-  void write_summary(nlohmann::json summary) const;
+  /// Writes summary.json (rank 0) in the one layout of every case (summary_schema.hpp, docs/outputs.md): the case's
+  /// blocks `results`, `groups`, `numerics`, `timings` (only those; a missing one is written empty), the checks'
+  /// verdict, and schema version, case type, `quick`, provenance, wall time and ranks. Returns the summary written.
+  nlohmann::json write_summary(nlohmann::json blocks, const CheckList& checks = {}) const;
 
  private:
   RunContext() = default;

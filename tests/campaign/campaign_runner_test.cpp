@@ -3,6 +3,8 @@
 // its reason, the dataset assembled, and a second invocation on the finished folder doing nothing.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "support/run_command.hpp"
 #include "support/background_run.hpp"
 #include "resolved/cases/case_text_helpers.hpp"
@@ -55,8 +57,9 @@ vtk_frames = 1
   std::ofstream(dir / "campaign.toml") << "[campaign]\nname = \"test\"\ntemplate = \"case.toml\"\njobs = 2\n"
                                        << campaign_lines << "[grid.re]\nkey = \"flow.reynolds\"\nvalues = " << reynolds_values << "\n"
                                        << "[dataset]\nfile = \"dataset.csv\"\nrow_axes = \"re\"\n"
-                                       << "[dataset.columns.u_max_m_s]\npointer = \"/u_max_m_s\"\n"
-                                       << "[dataset.columns.u_max_analytic_m_s]\npointer = \"/u_max_analytic_m_s\"\n";
+                                       << "[dataset.columns.u_max_m_s]\npointer = \"/results/u_max_m_s\"\n"
+                                       << "pointer_before_schema_1 = \"/u_max_m_s\"\n"
+                                       << "[dataset.columns.u_max_analytic_m_s]\npointer = \"/results/u_max_analytic_m_s\"\n";
   return dir;
 }
 
@@ -99,6 +102,12 @@ TEST(Campaign, AFreshCloneGoesOnFromTheArchive) {
   const auto looked = run("campaign " + dir.string() + " --status");   // the archived runs' wall time counts
   EXPECT_NE(looked.output.find("done*"), std::string::npos) << looked.output;
   EXPECT_EQ(looked.output.find("runs so far 0.0s"), std::string::npos) << looked.output;
+  // A run archived before summary.json's schema 1 (flat, no schema_version) is read at pointer_before_schema_1.
+  const fs::path archived = dir / "archive" / "re-0.1" / "summary.json";
+  const auto current = nlohmann::json::parse(std::ifstream(archived));
+  nlohmann::json flat = current["results"];
+  flat["provenance"] = current["provenance"];
+  std::ofstream(archived) << flat.dump(2);
   const auto again = run("campaign " + dir.string());
   EXPECT_EQ(again.code, 0) << again.output;
   EXPECT_NE(again.output.find("2 done"), std::string::npos) << again.output;

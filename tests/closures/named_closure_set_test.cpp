@@ -2,6 +2,7 @@
 // A committed closure set named in a case (`drag = "resolved"`) is the same closure as its file named by path.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -61,4 +62,32 @@ TEST(NamedClosureSet, UnknownNamesListTheSet) {
     EXPECT_NE(std::string(e.what()).find("resolved"), std::string::npos) << e.what();
   }
   EXPECT_THROW((void)hc::named_closure_file("synthetic-not-registered", hc::ClosureKind::drag), hs::common::ConfigError);
+}
+
+// An installed hemoscale finds the sets away from the source tree (#31): $HS_DATA_DIR first, then
+// share/hemoscale/data beside bin/, then the tree; a set found nowhere names every folder looked in.
+TEST(NamedClosureSet, DataDirFromTheEnvironmentComesFirstAndMissingSetsSayWhereTheyWereLookedFor) {
+  const fs::path data = fs::temp_directory_path() / "hs_named_set_data";
+  fs::remove_all(data);
+  fs::create_directories(data / "closures/resolved/drag_coefficient");
+  fs::copy_file(kResolved / "drag_coefficient/cd_di_rep.toml", data / "closures/resolved/drag_coefficient/cd_di_rep.toml");
+  ::setenv("HS_DATA_DIR", data.c_str(), 1);
+  const auto dirs = hc::closure_data_dirs();
+  ASSERT_EQ(dirs.size(), 3U);
+  EXPECT_EQ(dirs[0], data);
+  EXPECT_EQ(dirs[1].filename(), "data");   // PREFIX/share/hemoscale/data beside the executable's folder
+  EXPECT_EQ(dirs[2], kResolved.parent_path().parent_path());
+  EXPECT_EQ(hc::named_closure_file("resolved", hc::ClosureKind::drag), data / "closures/resolved/drag_coefficient/cd_di_rep.toml");
+  try {
+    (void)hc::closure_set_dir("no-such-set");
+    FAIL() << "a set found nowhere must be refused";
+  } catch (const hs::common::ConfigError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find((data / "closures/no-such-set").string()), std::string::npos) << m;
+    EXPECT_NE(m.find((kResolved.parent_path() / "no-such-set").string()), std::string::npos) << m;
+    EXPECT_NE(m.find("HS_DATA_DIR"), std::string::npos) << m;
+  }
+  ::unsetenv("HS_DATA_DIR");
+  EXPECT_EQ(hc::named_closure_file("resolved", hc::ClosureKind::drag), kResolved / "drag_coefficient/cd_di_rep.toml");
+  fs::remove_all(data);
 }

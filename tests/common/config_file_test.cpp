@@ -2,6 +2,9 @@
 // Strict case-file reading: every bad input is one ConfigError naming file, key, value and what is allowed.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "common/config/config_file.hpp"
@@ -104,4 +107,36 @@ TEST(ConfigFile, FarOffKeyGetsNoSuggestion) {
   const auto missing = error_of("[fluid]\nviscosity = 1e-6\n", read_fluid);
   EXPECT_NE(missing.find("kinematic_viscosity_m2_s: missing"), std::string::npos) << missing;
   EXPECT_EQ(missing.find("did you mean"), std::string::npos) << missing;
+}
+
+// case.resolved.toml quotes a float as the user wrote it (#31: 1e-05, not 1.0000000000000001e-05), and it reads back
+// to the same double; integers and strings that look like numbers are left alone.
+TEST(ConfigFile, ResolvedCaseWritesShortestFloatsThatRoundTrip) {
+  const auto dir = std::filesystem::temp_directory_path() / "hs_resolved_floats";
+  std::filesystem::create_directories(dir);
+  auto config = hs::common::ConfigFile::parse(
+      "[numerics]\ndx_m = 1e-05\nnu = 1.0e-6\nthird = 0.3333333333333333\nsteps = 100\nlist = [2.5e-05, 0.1, 3]\n"
+      "name = \"1.0000000000000001e-05\"\nday_label = '1979-05-27 or 2.50'\n",
+      (dir / "case.toml").string());
+  auto numerics = config->root().section("numerics");
+  (void)numerics.positive("dx_m");
+  (void)numerics.positive("nu");
+  (void)numerics.positive("third");
+  (void)numerics.integer_in("steps", 1, 1000);
+  (void)numerics.numbers_in("list", 0.0, 10.0, 3);
+  (void)numerics.string("name");
+  (void)numerics.string("day_label");
+  config->write_resolved(dir / "case.resolved.toml", false, false);
+  std::ostringstream text;
+  text << std::ifstream(dir / "case.resolved.toml").rdbuf();
+  const std::string s = text.str();
+  for (const char* expected : {"dx_m = 1e-05\n", "nu = 1e-06\n", "third = 0.3333333333333333\n", "steps = 100\n",
+                               "2.5e-05", "0.1", "1.0000000000000001e-05", "1979-05-27 or 2.50"}) {
+    EXPECT_NE(s.find(expected), std::string::npos) << expected << " in\n" << s;
+  }
+  const auto back = toml::parse_file((dir / "case.resolved.toml").string());
+  EXPECT_EQ(back["numerics"]["dx_m"].value<double>(), 1e-05);
+  EXPECT_EQ(back["numerics"]["third"].value<double>(), 0.3333333333333333);
+  EXPECT_EQ(back["numerics"]["list"][0].value<double>(), 2.5e-05);
+  std::filesystem::remove_all(dir);
 }

@@ -23,7 +23,7 @@ TEST(RunContext, CreatesFolderAndResolvedCase) {
   auto ctx = RunContext::start(request, "test");
   EXPECT_TRUE(fs::exists(ctx.folder().file("case.resolved.toml")));
   EXPECT_TRUE(fs::exists(ctx.folder().file("log.txt")));
-  ctx.write_summary({{"answer", 42}});
+  ctx.write_summary({{"results", {{"answer", 42}}}});
   EXPECT_TRUE(fs::exists(ctx.folder().file("summary.json")));
   EXPECT_EQ(ctx.folder().path().parent_path(), dir / "runs");
 }
@@ -47,7 +47,7 @@ TEST(RunContext, QuickIsRecordedInResolvedCaseSummaryAndLog) {
                             .quick = true};
   auto ctx = RunContext::start(request, "test");
   ctx.log().info("result 42");
-  ctx.write_summary({{"answer", 42}});
+  ctx.write_summary({{"results", {{"answer", 42}}}});
   auto read = [&](const char* name) {
     std::ostringstream text;
     text << std::ifstream(ctx.folder().file(name)).rdbuf();

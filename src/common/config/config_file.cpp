@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Strict reading of a TOML case file into typed values.
 #include "common/config/config_file.hpp"
+#include "common/config/toml_floats.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -374,7 +375,9 @@ void ConfigFile::write_resolved(const std::filesystem::path& file, bool quick, b
   if (quick) out << "# Run with --quick: the coarse, short CI version of the case; a smoke test, not a result.\n";
   toml::table as_run = resolved_;
   as_run.insert_or_assign("invocation", toml::table{{"quick", quick}, {"resume", resume}});
-  out << as_run << '\n';
+  std::ostringstream text;
+  text << as_run << '\n';
+  out << with_shortest_floats(text.str());   // 1e-05 as written, not 1.0000000000000001e-05
 }
 
 }  // namespace hs::common

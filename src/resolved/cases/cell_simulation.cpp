@@ -43,6 +43,18 @@ AfterSample agree_after_sample(common::CheckpointSchedule& schedule, int rank) {
 
 }  // namespace
 
+nlohmann::json groups_of(const nlohmann::json& results) {
+  static const char* const kGroups[] = {"reynolds",         "ca",          "ca_open",     "ca_throat",
+                                        "ca_initial",       "re_p",        "particle_reynolds",
+                                        "particle_reynolds_throat", "gamma_plus", "u_r_plus", "r_star",
+                                        "confinement",      "confinement_open", "confinement_throat"};
+  nlohmann::json g = nlohmann::json::object();
+  for (const char* name : kGroups) {
+    if (results.contains(name) && results.at(name).is_number()) g[name] = results.at(name);
+  }
+  return g;
+}
+
 nlohmann::json membrane_solve_summary(const NpfemStatistics& stats) {
   const auto per = [](double a, long b) { return b > 0 ? a / static_cast<double>(b) : 0.0; };
   return {{"steps", stats.steps},
@@ -87,6 +99,22 @@ void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s) {
   loop.add("markers_advect", [&s] { s.cell->markers_advect(); });
 }
 
+std::vector<common::Vec3> wrapped_into_box(std::vector<common::Vec3> x_m, const common::Vec3& origin_m,
+                                           const std::array<int, 3>& nodes, double dx_m,
+                                           const std::array<bool, 3>& periodic) {
+  if (x_m.empty()) return x_m;
+  common::Vec3 centroid;
+  for (const auto& v : x_m) centroid += v;
+  centroid = centroid / static_cast<double>(x_m.size());
+  for (int a = 0; a < 3; ++a) {
+    if (!periodic[a]) continue;
+    const double period_m = nodes[a] * dx_m;
+    const double shift_m = period_m * std::floor((centroid[a] - origin_m[a]) / period_m);
+    for (auto& v : x_m) v[a] -= shift_m;
+  }
+  return x_m;
+}
+
 double smooth_ramp(long step, long steps) {
   if (steps <= 0) return 1.0;
   const double ramp = static_cast<double>(step) / static_cast<double>(steps);
@@ -101,7 +129,8 @@ void write_cell_frames(const CellSimulation& s, const common::RunContext& ctx, i
   const auto rho_all = common::gather_to_root(s.lattice->decomposition(), rho, 1);
   const auto u_all = common::gather_to_root(s.lattice->decomposition(), u, 3);
   if (ctx.rank() != 0) return;
-  const auto x = s.membrane->positions_m();
+  const auto x = wrapped_into_box(s.membrane->positions_m(), s.origin_m, s.nodes, s.units.dx_m(),
+                                  s.lattice->decomposition().periodic());
   common::VtkPolyData poly(x, s.membrane->triangles());
   poly.add_point_vector("velocity_m_s", s.membrane->velocities_m_s());
   const std::string mname = fmt::format("membrane_{:05d}.vtp", frame);

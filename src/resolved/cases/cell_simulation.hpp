@@ -47,9 +47,22 @@ void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const Membran
                       const common::Vec3& centroid_m,
                       std::function<void(std::span<const common::Vec3>, std::vector<common::Vec3>&)> add_forces_N = {});
 
-/// The coupled stages of one lattice step, in Palabos-npFEM order (resolved-methods.md 2.3), named for the timers.
 /// The membrane solver's convergence record for summary.json: steps, iterations per step, unconverged steps and why.
 [[nodiscard]] nlohmann::json membrane_solve_summary(const NpfemStatistics& stats);
+
+/// summary.json's `groups` of a cell case: the dimensionless groups among its results (Re, Ca, Re_p, gamma+, u_r+, r*,
+/// confinement, as the case has them). The results keep them too, beside the values measured with them: the campaign
+/// columns and the archived runs read them there (`/results/gamma_plus`).
+[[nodiscard]] nlohmann::json groups_of(const nlohmann::json& results);
+
+/// `x_m` (a membrane's vertices) moved by whole periods along the periodic axes so that its centroid lies in the
+/// lattice box [origin, origin + nodes dx): the cell travels on unwrapped coordinates (the time series keep them),
+/// its VTK frames are drawn where the fluid is. The mesh moves as one, so no triangle is split.
+[[nodiscard]] std::vector<common::Vec3> wrapped_into_box(std::vector<common::Vec3> x_m, const common::Vec3& origin_m,
+                                                         const std::array<int, 3>& nodes, double dx_m,
+                                                         const std::array<bool, 3>& periodic);
+
+/// The coupled stages of one lattice step, in Palabos-npFEM order (resolved-methods.md 2.3), named for the timers.
 
 void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s);
 

@@ -156,21 +156,21 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                  loop.timing_table());
   nlohmann::json summary;
   summary["results"] = series.results();
+  summary["groups"] = groups_of(summary["results"]);
   const common::CheckList checks = plate_cell_checks(c, summary["results"], series.samples());
-  checks.write_to(summary);
-  summary["dx_m"] = c.numerics.dx_m;
-  summary["dt_s"] = c.numerics.dt_s;
-  summary["tau"] = c.numerics.collision.tau;
-  summary["membrane_mass_factor"] = c.numerics.membrane_mass_factor;
-  summary["membrane_velocity_relaxation"] = r.membrane->velocity_relaxation();   // C_alpha per npFEM step
-  summary["steps"] = loop.step();
-  summary["simulated_time_s"] = simulated_s;
-  summary["wall_s_per_simulated_ms"] = ctx.wall_seconds() / (1e3 * simulated_s);
-  summary["stage_timings"] = loop.timings();
-  summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
-  summary["membrane_solve"] = membrane_solve_summary(r.membrane->statistics());
-  ctx.write_summary(summary);
-  if (!checks.checks().empty()) checks.print(type);
+  summary["numerics"] = {{"dx_m", c.numerics.dx_m},
+                         {"dt_s", c.numerics.dt_s},
+                         {"tau", c.numerics.collision.tau},
+                         {"membrane_mass_factor", c.numerics.membrane_mass_factor},
+                         {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
+                         {"steps", loop.step()},
+                         {"simulated_time_s", simulated_s},
+                         {"wall_s_per_simulated_ms", ctx.wall_seconds() / (1e3 * simulated_s)},
+                         {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps},
+                         {"membrane_solve", membrane_solve_summary(r.membrane->statistics())}};
+  summary["timings"] = loop.timings();
+  ctx.write_summary(summary, checks);
+  if (!checks.checks().empty()) checks.print(ctx.log(), type);
   return checks.exit_code();
 }
 

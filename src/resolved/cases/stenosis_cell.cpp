@@ -142,20 +142,21 @@ nlohmann::json summary_of(const StenosisRun& r, const StenosisSeries& series, co
   const double simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
   nlohmann::json summary;
   summary["results"] = series.results();
-  summary["plasma_calibration"] = plasma_summary(c, plasma);
-  summary["dx_m"] = c.numerics.dx_m;
-  summary["dt_s"] = c.numerics.dt_s;
-  summary["tau"] = c.numerics.collision.tau;
-  summary["membrane_mass_factor"] = c.numerics.membrane_mass_factor;
-  summary["membrane_velocity_relaxation"] = r.membrane->velocity_relaxation();   // C_alpha per npFEM step
-  summary["wall_repulsion_range_m"] = c.repulsion.range_m;
-  summary["wall_repulsion_stiffness_N_m"] = c.repulsion.stiffness_N_m;
-  summary["spin_up_steps"] = c.spin_up_steps;
-  summary["steps"] = loop.step();
-  summary["simulated_time_s"] = simulated_s;
-  summary["wall_s_per_simulated_ms"] = wall_s / (1e3 * simulated_s);
-  summary["stage_timings"] = loop.timings();
-  summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
+  summary["groups"] = groups_of(summary["results"]);
+  summary["numerics"] = {{"plasma_calibration", plasma_summary(c, plasma)},
+                         {"dx_m", c.numerics.dx_m},
+                         {"dt_s", c.numerics.dt_s},
+                         {"tau", c.numerics.collision.tau},
+                         {"membrane_mass_factor", c.numerics.membrane_mass_factor},
+                         {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
+                         {"wall_repulsion_range_m", c.repulsion.range_m},
+                         {"wall_repulsion_stiffness_N_m", c.repulsion.stiffness_N_m},
+                         {"spin_up_steps", c.spin_up_steps},
+                         {"steps", loop.step()},
+                         {"simulated_time_s", simulated_s},
+                         {"wall_s_per_simulated_ms", wall_s / (1e3 * simulated_s)},
+                         {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps}};
+  summary["timings"] = loop.timings();
   return summary;
 }
 
@@ -230,10 +231,8 @@ int run_stenosis(const common::CaseRequest& request) {
     checks.skip("the cell passes the throat (centroid past stop_x_m)",
                 fmt::format("--quick: {:.4g} s simulated, too short to reach stop_x_m", simulated_s));
   }
-  nlohmann::json summary = summary_of(r, series, plasma, loop, ctx.wall_seconds());
-  checks.write_to(summary);
-  ctx.write_summary(summary);
-  checks.print("stenosis");
+  ctx.write_summary(summary_of(r, series, plasma, loop, ctx.wall_seconds()), checks);
+  checks.print(ctx.log(), "stenosis");
   return checks.exit_code();
 }
 

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "common/check_list.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/io/vtk_polydata.hpp"
 #include "common/log.hpp"
@@ -80,6 +81,7 @@ int run_stretching(const hs::common::CaseRequest& request) {
   hs::common::PvdSeries pvd(run.vtk_dir() / "membrane.pvd");
   nlohmann::json levels = nlohmann::json::array();
   bool all_good = true;
+  hs::common::CheckList checks;   // one per force level: steady and inside the band
   double time_s = 0.0;
   for (std::size_t i = 0; i < c.band.size(); ++i) {
     const StretchingBandPoint& b = c.band[i];
@@ -87,6 +89,9 @@ int run_stretching(const hs::common::CaseRequest& request) {
     time_s += p.steps * c.setup.time_step_s;
     const bool inside = b.axial_inside(p.axial_m) && b.transverse_inside(p.transverse_m);
     all_good = all_good && inside && p.steady;
+    checks.expect(fmt::format("F = {:g} pN: steady, inside the Mills band", b.force_N * 1e12), inside && p.steady,
+                  fmt::format("axial {:.3f} um, transverse {:.3f} um{}", p.axial_m * 1e6, p.transverse_m * 1e6,
+                              p.steady ? "" : ", NOT steady"));
     log.result("F = {:6.1f} pN: axial {:.3f} um [{:.2f}, {:.2f}], transverse {:.3f} um [{:.2f}, {:.2f}] {}; dA/A {:.1e}, "
                "dV/V {:.1e}; {} steps, {} L-BFGS iterations, {} steps unconverged{}",
                b.force_N * 1e12, p.axial_m * 1e6, b.axial_lower_m * 1e6, b.axial_upper_m * 1e6, p.transverse_m * 1e6,
@@ -104,14 +109,16 @@ int run_stretching(const hs::common::CaseRequest& request) {
                       {"inside_band", inside}, {"steady", p.steady}, {"area_change", p.area_change},
                       {"volume_change", p.volume_change}, {"steps", p.steps}, {"iterations", p.iterations}});
   }
-  nlohmann::json summary = {{"mesh", to_json(mesh_quality(mesh))}, {"levels", levels}, {"all_inside_band", all_good},
-                            {"npfem_factorisation_s", experiment.solver().statistics().factorisation_s},
-                            {"reference", c.reference_csv.string()}};
-  ctx.write_summary(summary);
+  nlohmann::json summary;
+  summary["results"] = {{"levels", levels}, {"all_inside_band", all_good}, {"reference", c.reference_csv.string()}};
+  summary["numerics"] = {{"mesh", to_json(mesh_quality(mesh))},
+                         {"npfem_factorisation_s", experiment.solver().statistics().factorisation_s}};
+  ctx.write_summary(summary, checks);
   plot(run, c.reference_csv, log);
+  checks.print(log, "stretching");
   log.result("stretching: {} -> {}", all_good ? "all levels inside the Mills band" : "some levels OUTSIDE the band",
              run.path().string());
-  return all_good ? 0 : 1;
+  return checks.exit_code();
 }
 
 }  // namespace hs::resolved

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/check_list.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
 #include "common/io/csv_writer.hpp"
@@ -136,30 +137,32 @@ int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, co
              "(analytic {:.6g}, error {:.3f} %), {} after {} steps: {}",
              u_max, c.u_max_m_s, 100.0 * err_u, q, q_exact, 100.0 * err_q,
              out.converged ? "steady" : "NOT converged", out.steps, passed ? "PASSED" : "FAILED");
+  common::CheckList checks;
+  checks.expect("the flow reaches steady state", out.converged, fmt::format("{} steps", out.steps));
+  checks.expect("u_max vs Poiseuille", err_u < kUMaxTolerance,
+                fmt::format("error {:.3f} % (band {:g} %)", 100.0 * err_u, 100.0 * kUMaxTolerance));
+  checks.expect("flow rate vs Poiseuille", err_q < kFlowRateTolerance,
+                fmt::format("error {:.3f} % (band {:g} %)", 100.0 * err_q, 100.0 * kFlowRateTolerance));
   nlohmann::json s;
-  s["reynolds"] = c.reynolds;
-  s["lattice_mach"] = c.lattice_mach;
-  s["tau"] = c.collision.tau;
-  s["collision"] = c.collision.model == CollisionModel::trt ? "trt" : "bgk";
-  s["dx_m"] = c.dx_m;
-  s["dt_s"] = c.dt_s;
-  s["radius_lattice_spacings"] = c.radius_m / c.dx_m;
-  s["steps"] = out.steps;
-  s["converged"] = out.converged;
-  s["u_max_m_s"] = u_max;
-  s["u_max_analytic_m_s"] = c.u_max_m_s;
-  s["u_max_rel_error"] = err_u;
-  s["flow_rate_m3_s"] = q;
-  s["flow_rate_analytic_m3_s"] = q_exact;
-  s["flow_rate_rel_error"] = err_q;
-  s["tolerance_u_max"] = kUMaxTolerance;
-  s["tolerance_flow_rate"] = kFlowRateTolerance;
-  s["check_passed"] = passed;
-  s["stage_timings"] = out.timings;
-  ctx.write_summary(s);
+  s["results"] = {{"converged", out.converged},          {"u_max_m_s", u_max},
+                  {"u_max_analytic_m_s", c.u_max_m_s},   {"u_max_rel_error", err_u},
+                  {"flow_rate_m3_s", q},                 {"flow_rate_analytic_m3_s", q_exact},
+                  {"flow_rate_rel_error", err_q}};
+  s["groups"] = {{"reynolds", c.reynolds}, {"lattice_mach", c.lattice_mach}};
+  s["numerics"] = {{"tau", c.collision.tau},
+                   {"collision", c.collision.model == CollisionModel::trt ? "trt" : "bgk"},
+                   {"dx_m", c.dx_m},
+                   {"dt_s", c.dt_s},
+                   {"radius_lattice_spacings", c.radius_m / c.dx_m},
+                   {"steps", out.steps},
+                   {"tolerance_u_max", kUMaxTolerance},
+                   {"tolerance_flow_rate", kFlowRateTolerance}};
+  s["timings"] = out.timings;
+  ctx.write_summary(s, checks);
+  checks.print(log, "tube-poiseuille");
   log.info("outputs: {} (summary.json, timeseries.csv, fields.pvd + vtk/, units.txt, case.resolved.toml, log.txt)",
            ctx.folder().path().string());
-  return passed ? 0 : 1;
+  return checks.exit_code();
 }
 
 }  // namespace

@@ -110,9 +110,9 @@ CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDem
   out.summary = m.summary(run, out.rows);
   const nlohmann::json groups = skeleton_groups(run);
   for (const auto& g : groups.items()) out.summary["groups"][g.key()] = g.value();
-  out.summary["cfd_steps"] = static_cast<long>(out.rows.size());
-  out.summary["stage_timings"] = loop.timings();
-  out.summary["prepare_seconds"] = out.prepare_seconds;
+  out.summary["numerics"]["cfd_steps"] = static_cast<long>(out.rows.size());
+  out.summary["numerics"]["prepare_seconds"] = out.prepare_seconds;
+  out.summary["timings"] = loop.timings();
   out.timing_table = loop.timing_table();
   return out;
 }

@@ -81,7 +81,8 @@ class CfdDemMeasurement {
   /// The case's own restart state beyond the rows (the skeleton writes them as "series").
   virtual void write_state(hs::common::Checkpoint& /*cp*/) const {}
   virtual void read_state(const hs::common::Checkpoint& /*cp*/) {}
-  /// summary.json's measured values (and the groups under "groups"), from the whole series.
+  /// summary.json's blocks from the whole series: "results" (measured values), "groups" (dimensionless groups) and
+  /// "numerics" (model choices, averaging); the skeleton adds its groups, steps and "timings".
   [[nodiscard]] virtual nlohmann::json summary(const CfdDemSolvers& run, const std::vector<std::vector<double>>& rows) const = 0;
 };
 
@@ -104,7 +105,7 @@ struct CfdDemLoopOptions {
 
 struct CfdDemOutcome {
   std::vector<std::vector<double>> rows;   // the whole series, saved rows included
-  nlohmann::json summary;                  // the measurement's, with the skeleton's groups and stage timings
+  nlohmann::json summary;                  // the measurement's blocks, with the skeleton's groups, steps and timings
   std::string timing_table;                // wall seconds per stage, for the log
   double prepare_seconds = 0.0;            // the measurement's prepare() (e.g. a plasma-only reference run)
 };

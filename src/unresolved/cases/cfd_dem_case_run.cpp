@@ -3,6 +3,7 @@
 #include "unresolved/cases/cfd_dem_case_run.hpp"
 
 #include <memory>
+#include <utility>
 
 #include "common/io/csv_writer.hpp"
 #include "common/progress.hpp"
@@ -36,9 +37,8 @@ CfdDemOutcome run_cfd_dem_in_folder(hs::common::RunContext& ctx, CfdDemSolvers& 
 
 int finish_cfd_dem_case(hs::common::RunContext& ctx, nlohmann::json summary, const hs::common::CheckList& checks,
                         const std::string& case_type) {
-  checks.write_to(summary);
-  ctx.write_summary(summary);
-  if (ctx.rank() == 0) checks.print(case_type);
+  ctx.write_summary(std::move(summary), checks);
+  checks.print(ctx.log(), case_type);   // rank 0 prints: the log writes result lines there only
   return checks.exit_code();
 }
 

@@ -162,11 +162,11 @@ int run_open_geometry(const hs::common::CaseRequest& request) {
   const CfdDemOutcome out = run_cfd_dem_in_folder(
       ctx, run, m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .vtk_every_s = c.vtk_every_s});
   hs::common::CheckList checks;
-  check_open_geometry(c, out.summary, checks);
-  ctx.log().info("open-geometry: {} cells in, {} out, {} present; domain hematocrit {:.4f}; outputs in {}",
-                 out.summary["cells_injected"].get<long>(), out.summary["cells_removed"].get<long>(),
-                 out.summary["cells_present"].get<long>(), out.summary["domain_hematocrit"].get<double>(),
-                 ctx.folder().path().string());
+  const nlohmann::json& res = out.summary["results"];
+  check_open_geometry(c, res, checks);
+  ctx.log().result("open-geometry: {} cells in, {} out, {} present; domain hematocrit {:.4f}, mean DI {:.4f}; outputs in {}",
+                   res["cells_injected"].get<long>(), res["cells_removed"].get<long>(), res["cells_present"].get<long>(),
+                   res["domain_hematocrit"].get<double>(), res["mean_di"].get<double>(), ctx.folder().path().string());
   return finish_cfd_dem_case(ctx, out.summary, checks, "open-geometry");
 }
 

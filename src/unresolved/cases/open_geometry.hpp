@@ -57,6 +57,7 @@ struct OpenGeometryConfig {
 [[nodiscard]] CfdDemSetup open_geometry_setup(const OpenGeometryConfig& c);
 
 /// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says.
+/// Returns summary.json's blocks (results, groups, numerics, timings), without the checks.
 [[nodiscard]] nlohmann::json simulate_open_geometry(const OpenGeometryConfig& c,
                                                     const std::function<void(const std::vector<double>&)>& on_row,
                                                     const CfdDemRestart& restart = {});

@@ -186,34 +186,36 @@ nlohmann::json OpenGeometryMeasurement::summary(const CfdDemSolvers& run, const 
                             : 0.0;
   const double residence_s = domain_volume_m3_ / c_.inflow_m3_s();
   nlohmann::json j;
-  j["domain_fluid_volume_m3"] = domain_volume_m3_;
-  j["residence_time_s"] = residence_s;
-  j["residence_times"] = static_cast<double>(total) * dt / residence_s;
-  j["cells_injected"] = traffic_->cells_injected();
-  j["cells_removed"] = traffic_->cells_removed();
-  j["cells_present"] = static_cast<long>(run.dem().particles().n_owned());
-  j["bookkeeping_exact_every_step"] = exact;
-  j["rbc_volume_injected_m3"] = injected;
-  j["rbc_volume_owed_m3"] = owed;   // sum over inlets of Ht_d x the blood volume that came in
-  j["injected_over_owed"] = owed > 0.0 ? injected / owed : 0.0;
-  j["openings"] = opening_summary(rows, first);
-  j["fluid_balance_pct"] = fluid_in > 0.0 ? 100.0 * (fluid_out + stored - fluid_in) / fluid_in : 0.0;
-  j["domain_hematocrit"] = window_mean(rows, first, total, kDomainHt);
-  j["domain_hematocrit_halves"] = {window_mean(rows, first, middle, kDomainHt), window_mean(rows, middle, total, kDomainHt)};
-  j["mean_di"] = window_mean(rows, first, total, kMeanDi);
-  j["averaged_steps"] = total - first;
-  j["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
-  write_model_summary(c_.model, j);
-  j["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
-  j["piso_correctors"] = c_.piso_correctors;
+  nlohmann::json& res = j["results"];
+  nlohmann::json& num = j["numerics"];
+  res["domain_fluid_volume_m3"] = domain_volume_m3_;
+  res["residence_time_s"] = residence_s;
+  res["residence_times"] = static_cast<double>(total) * dt / residence_s;
+  res["cells_injected"] = traffic_->cells_injected();
+  res["cells_removed"] = traffic_->cells_removed();
+  res["cells_present"] = static_cast<long>(run.dem().particles().n_owned());
+  res["bookkeeping_exact_every_step"] = exact;
+  res["rbc_volume_injected_m3"] = injected;
+  res["rbc_volume_owed_m3"] = owed;   // sum over inlets of Ht_d x the blood volume that came in
+  res["injected_over_owed"] = owed > 0.0 ? injected / owed : 0.0;
+  res["openings"] = opening_summary(rows, first);
+  res["fluid_balance_pct"] = fluid_in > 0.0 ? 100.0 * (fluid_out + stored - fluid_in) / fluid_in : 0.0;
+  res["domain_hematocrit"] = window_mean(rows, first, total, kDomainHt);
+  res["domain_hematocrit_halves"] = {window_mean(rows, first, middle, kDomainHt), window_mean(rows, middle, total, kDomainHt)};
+  res["mean_di"] = window_mean(rows, first, total, kMeanDi);
+  num["averaged_steps"] = total - first;
+  res["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
+  write_model_summary(c_.model, num);
+  num["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
+  num["piso_correctors"] = c_.piso_correctors;
   // The groups of the first inlet's developed flow (the closures' own are per cell: docs/cfd-dem.md).
   for (const auto& o : c_.openings) {
     if (o.type != OpeningFlowType::flow_rate_inlet) continue;
     const double r = o.opening.radius_m;
     const double u = o.flow_rate_m3_s / (std::numbers::pi * r * r);
     const double nu = c_.fluid.kinematic_viscosity_m2_s;
-    j["groups"] = {{"inlet", o.opening.name},
-                   {"channel_reynolds", hs::common::channel_reynolds(c_.fluid.density_kg_m3, 2.0 * r, 2.0 * u, c_.fluid.dynamic_viscosity_Pa_s())},
+    num["groups_inlet"] = o.opening.name;
+    j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c_.fluid.density_kg_m3, 2.0 * r, 2.0 * u, c_.fluid.dynamic_viscosity_Pa_s())},
                    {"wall_gamma_plus", hs::common::shear_rate_plus(4.0 * u / r, r, nu)},   // Poiseuille: 4 U / R at the wall
                    {"confinement_d_over_D", c_.particles.diameter_m / (2.0 * r)}};
     break;

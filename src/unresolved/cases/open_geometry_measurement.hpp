@@ -54,6 +54,7 @@ class OpenGeometryMeasurement final : public CfdDemMeasurement {
 /// The case's checks: bookkeeping exact at every step; injected RBC volume within 2% of Ht_d x the inflow (only after
 /// >= 10 residence times); at the end of a full run (not --quick) the fluid's balance over the averaging window within
 /// 0.1% of the inflow and the domain hematocrit steady (its two averaging halves within 2% of each other).
-void check_open_geometry(const OpenGeometryConfig& c, const nlohmann::json& summary, hs::common::CheckList& checks);
+/// `results` is summary.json's "results" block.
+void check_open_geometry(const OpenGeometryConfig& c, const nlohmann::json& results, hs::common::CheckList& checks);
 
 }  // namespace hs::unresolved

@@ -114,7 +114,8 @@ nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<v
       .summary;
 }
 
-void add_tube_summary(const TubeOpenConfig& c, nlohmann::json& s) {
+void add_tube_summary(const TubeOpenConfig& c, nlohmann::json& summary) {
+  nlohmann::json& s = summary["results"];
   const double ht_in = s["openings"][0]["discharge_hematocrit"].get<double>();    // "inlet", "outlet": names sorted
   const double ht_out = s["openings"][1]["discharge_hematocrit"].get<double>();
   const double ht_tube = s["domain_hematocrit"].get<double>();
@@ -158,11 +159,12 @@ int run_tube_open(const hs::common::CaseRequest& request) {
       ctx, run, m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .vtk_every_s = c.vtk_every_s});
   add_tube_summary(c, out.summary);
   hs::common::CheckList checks;
-  check_tube_open(c, out.summary, checks);
-  ctx.log().info("tube-open: Ht_d inlet {:.4f}, outlet {:.4f}, tube Ht_T {:.4f}; {} cells in, {} out, {} present; outputs in {}",
-                 out.summary["discharge_hematocrit_inlet"].get<double>(), out.summary["discharge_hematocrit_outlet"].get<double>(),
-                 out.summary["tube_hematocrit"].get<double>(), out.summary["cells_injected"].get<long>(),
-                 out.summary["cells_removed"].get<long>(), out.summary["cells_present"].get<long>(), ctx.folder().path().string());
+  const nlohmann::json& res = out.summary["results"];
+  check_tube_open(c, res, checks);
+  ctx.log().result("tube-open: Ht_d inlet {:.4f}, outlet {:.4f}, tube Ht_T {:.4f}; {} cells in, {} out, {} present; outputs in {}",
+                   res["discharge_hematocrit_inlet"].get<double>(), res["discharge_hematocrit_outlet"].get<double>(),
+                   res["tube_hematocrit"].get<double>(), res["cells_injected"].get<long>(), res["cells_removed"].get<long>(),
+                   res["cells_present"].get<long>(), ctx.folder().path().string());
   return finish_cfd_dem_case(ctx, out.summary, checks, "tube-open");
 }
 

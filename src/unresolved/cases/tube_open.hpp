@@ -58,18 +58,18 @@ struct TubeOpenConfig {
 [[nodiscard]] CfdDemSetup tube_open_setup(const TubeOpenConfig& c);
 
 /// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says.
-/// Returns summary.json's content without the checks.
+/// Returns summary.json's blocks (results, groups, numerics, timings), without the checks.
 [[nodiscard]] nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<void(const std::vector<double>&)>& on_row,
                                                 const CfdDemRestart& restart = {});
 
-/// tube-open's own summary values from open-geometry's: discharge_hematocrit_inlet and _outlet,
+/// tube-open's own summary values (in the "results" block) from open-geometry's: discharge_hematocrit_inlet and _outlet,
 /// outlet_vs_inlet_discharge_pct, tube_hematocrit (the domain's), tube_over_discharge_hematocrit (< 1: Fahraeus),
 /// transits (= residence times, L / U), diameter_um, length_um, discharge_hematocrit_requested.
 void add_tube_summary(const TubeOpenConfig& c, nlohmann::json& summary);
 
 /// open-geometry's checks, and at steady state (not --quick) the outlet's discharge hematocrit within 2% of the inlet's
 /// and the tube hematocrit below the inlet's discharge hematocrit (Fahraeus).
-void check_tube_open(const TubeOpenConfig& c, const nlohmann::json& summary, hs::common::CheckList& checks);
+void check_tube_open(const TubeOpenConfig& c, const nlohmann::json& results, hs::common::CheckList& checks);
 
 /// `hemoscale run` entry: exit 0 when the case's checks pass, 1 otherwise.
 int run_tube_open(const hs::common::CaseRequest& request);

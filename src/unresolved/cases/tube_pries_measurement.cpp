@@ -130,21 +130,23 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
   const double u_plasma = q_plasma_m3_s_ / (std::numbers::pi * r_tube * r_tube);
   const double wall_shear_rate = 4.0 * u_plasma / r_tube;   // Poiseuille plasma: 4 u_mean / R
   nlohmann::json j;
-  j["diameter_um"] = c_.diameter_m * 1e6;
-  j["tube_hematocrit_requested"] = c_.tube_hematocrit;
-  j["tube_hematocrit"] = ht_achieved_;
-  j["rbc_count"] = static_cast<long>(rbc_count_);
-  j["discharge_hematocrit"] = avg.q_rbc_m3_s / q_blood;
-  j["relative_apparent_viscosity"] = q_plasma_m3_s_ / q_blood;
-  j["flow_rate_blood_m3_s"] = q_blood;
-  j["flow_rate_rbc_m3_s"] = avg.q_rbc_m3_s;
-  j["flow_rate_plasma_only_m3_s"] = q_plasma_m3_s_;
-  j["steady"] = std::abs(avg.ht_d_second_half - avg.ht_d_first_half) <= c_.steady_tolerance * std::abs(avg.ht_d_second_half);
-  j["ht_d_change_between_averaging_halves"] = avg.ht_d_second_half - avg.ht_d_first_half;
-  j["averaged_steps"] = avg.samples;
-  j["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
-  write_model_summary(c_.coupling_model(), j);
-  j["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
+  nlohmann::json& res = j["results"];
+  nlohmann::json& num = j["numerics"];
+  res["diameter_um"] = c_.diameter_m * 1e6;
+  res["tube_hematocrit_requested"] = c_.tube_hematocrit;
+  res["tube_hematocrit"] = ht_achieved_;
+  res["rbc_count"] = static_cast<long>(rbc_count_);
+  res["discharge_hematocrit"] = avg.q_rbc_m3_s / q_blood;
+  res["relative_apparent_viscosity"] = q_plasma_m3_s_ / q_blood;
+  res["flow_rate_blood_m3_s"] = q_blood;
+  res["flow_rate_rbc_m3_s"] = avg.q_rbc_m3_s;
+  res["flow_rate_plasma_only_m3_s"] = q_plasma_m3_s_;
+  res["steady"] = std::abs(avg.ht_d_second_half - avg.ht_d_first_half) <= c_.steady_tolerance * std::abs(avg.ht_d_second_half);
+  res["ht_d_change_between_averaging_halves"] = avg.ht_d_second_half - avg.ht_d_first_half;
+  num["averaged_steps"] = avg.samples;
+  res["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
+  write_model_summary(c_.coupling_model(), num);
+  num["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c_.fluid.density_kg_m3, c_.diameter_m, 2.0 * u_blood, mu)},
                  {"wall_gamma_plus", hs::common::shear_rate_plus(wall_shear_rate, r_tube, c_.fluid.kinematic_viscosity_m2_s)},
                  {"confinement_d_over_D", c_.particles.diameter_m / c_.diameter_m}};
@@ -171,8 +173,8 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
 TubePriesResult tube_pries_result(const nlohmann::json& summary) {
   TubePriesResult res;
   res.summary = summary;
-  res.ht_d = summary.at("discharge_hematocrit").get<double>();
-  res.mu_rel = summary.at("relative_apparent_viscosity").get<double>();
+  res.ht_d = summary.at("results").at("discharge_hematocrit").get<double>();
+  res.mu_rel = summary.at("results").at("relative_apparent_viscosity").get<double>();
   return res;
 }
 

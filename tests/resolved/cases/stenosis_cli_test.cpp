@@ -75,8 +75,8 @@ TEST(StenosisCli, QuickRunWritesTheDeformationSeriesAndTheGroups) {
   EXPECT_NEAR(res["confinement_throat"].get<double>(), 7.82 / 5.5, 1e-12);
   EXPECT_NEAR(res["flow_rate_target_m2_s"].get<double>(), 2.5e-4 * 15e-6, 1e-18);
   // The drive is calibrated on the plasma alone to the target flow rate; the cell and the start-up ramp take a little.
-  EXPECT_NEAR(summary["plasma_calibration"]["drive_m_s2"].get<double>() /
-                  summary["plasma_calibration"]["drive_lubrication_m_s2"].get<double>(), 1.0, 0.25);
+  EXPECT_NEAR(summary["numerics"]["plasma_calibration"]["drive_m_s2"].get<double>() /
+                  summary["numerics"]["plasma_calibration"]["drive_lubrication_m_s2"].get<double>(), 1.0, 0.25);
   EXPECT_FALSE(res["passed_stop_x"].get<bool>());
   EXPECT_TRUE(fs::exists(out / "membrane.pvd"));
 }

@@ -67,10 +67,10 @@ TEST(OpenGeometryCase, CommittedBifurcationRunsWithCountersAndFrames) {
   EXPECT_GT(table.column("inlet_cells_in").back(), 0.0);   // cells came in within 20 steps
   std::ifstream summary_file(out / "summary.json");
   const auto s = nlohmann::json::parse(summary_file);
-  EXPECT_TRUE(s["bookkeeping_exact_every_step"].get<bool>());
-  ASSERT_EQ(s["openings"].size(), 3u);
-  EXPECT_EQ(s["openings"][0]["name"], "inlet");   // names sorted
-  EXPECT_TRUE(s["stage_timings"].contains("cells_in_out"));
+  EXPECT_TRUE(s["results"]["bookkeeping_exact_every_step"].get<bool>());
+  ASSERT_EQ(s["results"]["openings"].size(), 3u);
+  EXPECT_EQ(s["results"]["openings"][0]["name"], "inlet");   // names sorted
+  EXPECT_TRUE(s["timings"].contains("cells_in_out"));
   EXPECT_TRUE(s["groups"].contains("channel_reynolds"));
   EXPECT_TRUE(fs::exists(out / "particles.pvd"));
   EXPECT_TRUE(fs::exists(out / "fields.pvd"));

@@ -36,9 +36,10 @@ TEST(TubePlasmaCase, CommittedCaseMeetsPoiseuille) {
   std::ifstream in(out / "summary.json");
   const auto summary = nlohmann::json::parse(in);
   // The acceptance band (2%) at the case's 10 cells across.
-  EXPECT_LT(std::abs(summary["flow_rate_error_pct"].get<double>()), 2.0);
+  EXPECT_LT(std::abs(summary["results"]["flow_rate_error_pct"].get<double>()), 2.0);
+  EXPECT_TRUE(summary["passed"].get<bool>());
   EXPECT_TRUE(summary.contains("provenance"));
-  EXPECT_GT(summary["reynolds"].get<double>(), 0.0);
+  EXPECT_GT(summary["groups"]["reynolds"].get<double>(), 0.0);
 }
 
 TEST(TubePlasmaCase, BadInputsNameTheKey) {

@@ -103,7 +103,7 @@ TEST(TubePriesRestart, RunFolderResumeRewritesTheTimeSeries) {
   ASSERT_EQ(t.size(), 4u);
   for (std::size_t k = 0; k < t.size(); ++k) EXPECT_NEAR(t[k], 2e-4 * static_cast<double>(k + 1), 1e-12) << "row " << k;
   std::ifstream in(out / "summary.json");
-  EXPECT_EQ(nlohmann::json::parse(in)["cfd_steps"].get<long>(), 4);
+  EXPECT_EQ(nlohmann::json::parse(in)["numerics"]["cfd_steps"].get<long>(), 4);
   fs::remove_all(out);
 }
 
