@@ -104,6 +104,7 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
   s.centroid_m = shape.centroid_m;
   for (const auto& v : r.membrane->velocities_m_s()) s.velocity_m_s += v;
   s.velocity_m_s = s.velocity_m_s / static_cast<double>(x.size());
+  s.energy = membrane_energy_snapshot(*r.membrane, time_s);
   return s;
 }
 
@@ -131,7 +132,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
     series.unpack(packed);
   }
   const CellOutputs out = open_cell_outputs(ctx, PlateCellSeries::columns());
-  for (const auto& s : series.samples()) out.row(series.row(s));   // rows up to the checkpoint (resume)
+  for (std::size_t i = 0; i < series.samples().size(); ++i) out.row(series.row(i));   // rows up to the checkpoint
   const long max_steps = r.units.to_lattice_steps(c.max_time_s);
   common::TimeLoop loop(max_steps, first_step);
   if (flow == PlateFlow::poiseuille) {
@@ -143,9 +144,8 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   common::Progress progress(type, max_steps, ctx.show_progress() && !request.quiet);
   const SampledRunHooks hooks{.sample =
                                   [&] {
-                                    const auto s = sample_state(r, r.units.to_si_time(static_cast<double>(loop.step())));
-                                    series.add(s);
-                                    out.row(series.row(s));
+                                    series.add(sample_state(r, r.units.to_si_time(static_cast<double>(loop.step()))));
+                                    out.row(series.row(series.samples().size() - 1));
                                   },
                               .done = {},
                               .pack = [&] { return series.pack(); }};
@@ -169,6 +169,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   summary["stage_timings"] = loop.timings();
   summary["membrane_unconverged_steps"] = r.membrane->statistics().unconverged_steps;
   summary["membrane_solve"] = membrane_solve_summary(r.membrane->statistics());
+  summary["membrane_energy"] = series.energy_results();
   ctx.write_summary(summary);
   if (!checks.checks().empty()) checks.print(type);
   return checks.exit_code();
