@@ -28,8 +28,8 @@ MembraneEnergyBalance membrane_energy_balance(const MembraneEnergySnapshot& a, c
   const double elastic_work = b.elastic_work_J - a.elastic_work_J;
   r.implicit_step_loss_J = (b.kinetic_step_loss_J - a.kinetic_step_loss_J) + (elastic_work - r.elastic_energy_change_J);
   r.solver_residual_work_J = b.solver_residual_work_J - a.solver_residual_work_J;
-  r.balance_residual_J = r.fluid_work_J - r.viscous_dissipation_J - r.damping_dissipation_J - r.elastic_energy_change_J -
-                         r.kinetic_energy_change_J;
+  r.balance_residual_J = r.fluid_work_J - r.viscous_dissipation_J - r.damping_dissipation_J -
+                         r.elastic_energy_change_J - r.kinetic_energy_change_J;
   r.books_error_J = r.balance_residual_J - r.implicit_step_loss_J - r.solver_residual_work_J;
   return r;
 }

@@ -39,12 +39,17 @@ struct MembraneEnergyBalance {
   double balance_residual_J = 0.0;
   double books_error_J = 0.0;
   /// balance_residual / fluid_work (0 when no work was done).
-  [[nodiscard]] double relative_residual() const { return fluid_work_J != 0.0 ? balance_residual_J / fluid_work_J : 0.0; }
+  [[nodiscard]] double relative_residual() const {
+    return fluid_work_J != 0.0 ? balance_residual_J / fluid_work_J : 0.0;
+  }
   /// Mean powers over the window, watts.
   [[nodiscard]] double mean_fluid_power_W() const { return duration_s > 0.0 ? fluid_work_J / duration_s : 0.0; }
-  [[nodiscard]] double mean_viscous_power_W() const { return duration_s > 0.0 ? viscous_dissipation_J / duration_s : 0.0; }
+  [[nodiscard]] double mean_viscous_power_W() const {
+    return duration_s > 0.0 ? viscous_dissipation_J / duration_s : 0.0;
+  }
 };
 
-[[nodiscard]] MembraneEnergyBalance membrane_energy_balance(const MembraneEnergySnapshot& a, const MembraneEnergySnapshot& b);
+[[nodiscard]] MembraneEnergyBalance membrane_energy_balance(const MembraneEnergySnapshot& a,
+                                                            const MembraneEnergySnapshot& b);
 
 }  // namespace hs::resolved
