@@ -98,6 +98,7 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
   PlateCellSample s;
   s.time_s = time_s;
   s.di = shape.deformation_index();
+  s.di_gyration = shape.gyration_deformation_index();
   s.inclination_rad = shear_plane_inclination(x, shape.centroid_m);
   const Vec3 d = x[static_cast<std::size_t>(r.marker)] - shape.centroid_m;
   s.marker_phase_rad = std::atan2(d.y, d.x);

@@ -18,6 +18,7 @@ namespace hs::resolved {
 struct PlateCellSample {
   double time_s = 0.0;
   double di = 0.0;
+  double di_gyration = 0.0;        // CellShape::gyration_deformation_index (all vertices count)
   double inclination_rad = 0.0;    // long axis in the shear plane (x, y) against the flow (x), in (-pi/2, pi/2]
   double marker_phase_rad = 0.0;   // marker vertex about the centroid in the shear plane, atan2(dy, dx)
   common::Vec3 centroid_m;         // unwrapped
