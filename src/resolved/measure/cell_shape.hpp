@@ -22,7 +22,7 @@ struct CellShape {
     return (extents_m[0] - extents_m[2]) / (extents_m[0] + extents_m[2]);
   }
   /// The same index from the gyration radii: every vertex counts, where the extents are set by the two extreme vertices
-  /// along each axis (a single vertex sticking out moves DI; issue #26's knob check). 0.44 for the resting cell.
+  /// along each axis (a single vertex sticking out moves DI; issue #26's knob check). ~0.45 for the resting cell.
   [[nodiscard]] double gyration_deformation_index() const {
     return (gyration_radii_m[0] - gyration_radii_m[2]) / (gyration_radii_m[0] + gyration_radii_m[2]);
   }
