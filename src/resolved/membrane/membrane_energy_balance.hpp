@@ -24,9 +24,9 @@ struct MembraneEnergySnapshot {
 
 /// The balance over [a, b]. Physically the work the fluid gives the membrane is dissipated by its viscosity (and the
 /// small Rayleigh damping) or stored: balance_residual = fluid_work - viscous - damping - dE - dKE. The implicit
-/// Euler step adds its own loss (implicit_step_loss = M|dv|^2 / 2 + grad E(x_{n+1}).u - dE, O(h) relative) and an
-/// unconverged minimisation leaves solver_residual_work; books_error = balance_residual - those two is round-off for
-/// a free membrane without the friction (NpfemStatistics).
+/// Euler step adds its own loss (implicit_step_loss = M|dv|^2 / 2 + grad E(x_{n+1}).u - dE, O(h) relative; of either
+/// sign, as E is not convex in x) and an unconverged minimisation leaves solver_residual_work; books_error =
+/// balance_residual - those two is round-off for a free membrane without the friction (NpfemStatistics).
 struct MembraneEnergyBalance {
   double duration_s = 0.0;
   double fluid_work_J = 0.0;

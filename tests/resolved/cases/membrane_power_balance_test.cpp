@@ -79,16 +79,16 @@ TEST(MembranePowerBalance, FluidWorkEqualsDissipationPlusStoredEnergyInTankTread
   // The viscosity takes most of the work here (measured 94 %; the rest is the elastic energy of the shape's swing):
   // the balance tests the viscous dissipation, not only the stored energy.
   EXPECT_GT(viscous, 0.5 * work);
-  // The balance. Implicit Euler loses energy of its own, O(h): for a Kelvin-Voigt shear mode the released elastic
-  // energy is 1 / (1 + h / (2 t_c)) of the viscous dissipation (membrane_viscosity_test), i.e. it loses h / (2 t_c)
-  // of it, t_c = eta_m / G_s = 9.7 ms, h = 2 dt = 10.7 us: 5.5e-4. The area and bending modes, stiffer and without
-  // viscosity, add to that loss; the bound allows twice the shear-mode estimate (measured 1.5x: 8.3e-4 of the
-  // viscous dissipation here, 7.9e-4 over 20-40 ms; halving h halves it: 0.503x). It must be a loss (> 0): implicit
-  // Euler never creates energy.
+  // The balance. Implicit Euler's energy error is O(h): for a Kelvin-Voigt shear mode the released elastic energy is
+  // 1 / (1 + h / (2 t_c)) of the viscous dissipation (membrane_viscosity_test), i.e. it loses h / (2 t_c) of it,
+  // t_c = eta_m / G_s = 9.7 ms, h = 2 dt = 10.7 us: 5.5e-4. The area and bending modes, stiffer and without
+  // viscosity, add to that; and as E is not convex in x (the volume and area energies are quadratic in V(x), A(x);
+  // the bending), a step's elastic term u.H.u / 2 can have either sign (the shipped case's start-up: -2.3 % of its
+  // viscous dissipation over 4-8 ms, with KE comparable to E). The bound allows twice the shear-mode estimate either
+  // way (measured +1.5x: 8.3e-4 of the viscous dissipation here, 7.9e-4 over 20-40 ms; halving h halves it: 0.503x).
   const double h_s = 2.0 * s["dt_s"].get<double>();
   const double t_c_s = kViscosity_N_s_m / kShearModulus_N_m;
-  EXPECT_GT(residual, 0.0);
-  EXPECT_LT(residual, 2.0 * h_s / (2.0 * t_c_s) * viscous) << "h / (2 t_c) = " << h_s / (2.0 * t_c_s);
+  EXPECT_LT(std::abs(residual), 2.0 * h_s / (2.0 * t_c_s) * viscous) << "h / (2 t_c) = " << h_s / (2.0 * t_c_s);
 }
 
 }  // namespace
