@@ -164,6 +164,7 @@ void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samp
   const std::span<double> field = s.lattice->force_field();
   cp.put("force_field", std::span<const double>(field.data(), field.size()));
   cp.put("membrane", s.membrane->state());
+  cp.put("membrane_statistics", s.membrane->statistics_state());   // counts and energy books of the whole run
   const CouplingState st = s.cell->state();
   cp.put("markers", flatten(st.marker_x_lu, st.marker_u_lu));
   if (!st.reaction_lu.empty()) cp.put("reaction", flatten(st.reaction_lu, {}));   // ibm_reaction: impulse not yet given
@@ -191,6 +192,7 @@ long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const
   if (field.size() != target.size()) throw common::ConfigError("checkpoint: force field of another lattice");
   std::copy(field.begin(), field.end(), target.begin());
   s.membrane->restore_state(cp.doubles("membrane"));
+  if (cp.has("membrane_statistics")) s.membrane->restore_statistics(cp.doubles("membrane_statistics"));   // older: 0
   const auto& m = cp.doubles("markers");
   CouplingState st;
   const std::size_t n = m.size() / 6;

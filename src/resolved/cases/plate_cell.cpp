@@ -98,12 +98,14 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
   PlateCellSample s;
   s.time_s = time_s;
   s.di = shape.deformation_index();
+  s.di_gyration = shape.gyration_deformation_index();
   s.inclination_rad = shear_plane_inclination(x, shape.centroid_m);
   const Vec3 d = x[static_cast<std::size_t>(r.marker)] - shape.centroid_m;
   s.marker_phase_rad = std::atan2(d.y, d.x);
   s.centroid_m = shape.centroid_m;
   for (const auto& v : r.membrane->velocities_m_s()) s.velocity_m_s += v;
   s.velocity_m_s = s.velocity_m_s / static_cast<double>(x.size());
+  s.energy = membrane_energy_snapshot(*r.membrane, time_s);
   return s;
 }
 
@@ -131,7 +133,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
     series.unpack(packed);
   }
   const CellOutputs out = open_cell_outputs(ctx, PlateCellSeries::columns());
-  for (const auto& s : series.samples()) out.row(series.row(s));   // rows up to the checkpoint (resume)
+  for (std::size_t i = 0; i < series.samples().size(); ++i) out.row(series.row(i));   // rows up to the checkpoint
   const long max_steps = r.units.to_lattice_steps(c.max_time_s);
   common::TimeLoop loop(max_steps, first_step);
   if (flow == PlateFlow::poiseuille) {
@@ -143,9 +145,8 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   common::Progress progress(type, max_steps, ctx.show_progress() && !request.quiet);
   const SampledRunHooks hooks{.sample =
                                   [&] {
-                                    const auto s = sample_state(r, r.units.to_si_time(static_cast<double>(loop.step())));
-                                    series.add(s);
-                                    out.row(series.row(s));
+                                    series.add(sample_state(r, r.units.to_si_time(static_cast<double>(loop.step()))));
+                                    out.row(series.row(series.samples().size() - 1));
                                   },
                               .done = {},
                               .pack = [&] { return series.pack(); }};
@@ -156,6 +157,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                  loop.timing_table());
   nlohmann::json summary;
   summary["results"] = series.results();
+  summary["results"]["membrane_energy"] = series.energy_results();
   summary["groups"] = groups_of(summary["results"]);
   const common::CheckList checks = plate_cell_checks(c, summary["results"], series.samples());
   summary["numerics"] = {{"dx_m", c.numerics.dx_m},

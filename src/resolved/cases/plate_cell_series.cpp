@@ -12,7 +12,8 @@
 namespace hs::resolved {
 namespace {
 
-constexpr std::size_t kPackedFields = 10;
+constexpr std::size_t kOldPackedFields = 10;   // checkpoints before the energy books: no header, 10 fields a sample
+constexpr std::size_t kPackedFields = 19;      // now: a header -kPackedFields (a time is never negative), then samples
 /// Share of the series treated as start-up before averages (mean inclination, DI, tank-treading rate) are taken.
 constexpr double kTransientFraction = 0.5;
 
@@ -40,31 +41,79 @@ TumblingPeriod tumbling_period(std::span<const double> time_s, std::span<const d
 
 std::vector<std::string> PlateCellSeries::columns() {
   return {"time_s", "di", "inclination_rad", "marker_phase_rad", "centroid_x_m", "centroid_y_m", "centroid_z_m",
-          "y_over_h", "velocity_x_m_s", "velocity_y_m_s"};
+          "y_over_h", "velocity_x_m_s", "velocity_y_m_s", "membrane_fluid_power_W", "membrane_viscous_power_W",
+          "membrane_elastic_energy_J", "membrane_kinetic_energy_J", "di_gyration"};
 }
 
-std::vector<double> PlateCellSeries::row(const PlateCellSample& s) const {
+std::vector<double> PlateCellSeries::row(std::size_t i) const {
+  const PlateCellSample& s = samples_.at(i);
+  const MembraneEnergySnapshot before = i > 0 ? samples_[i - 1].energy : MembraneEnergySnapshot{};
+  const MembraneEnergyBalance b = membrane_energy_balance(before, s.energy);
   return {s.time_s, s.di, s.inclination_rad, s.marker_phase_rad, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z,
-          s.centroid_m.y / config_.gap_m, s.velocity_m_s.x, s.velocity_m_s.y};
+          s.centroid_m.y / config_.gap_m, s.velocity_m_s.x, s.velocity_m_s.y, b.mean_fluid_power_W(),
+          b.mean_viscous_power_W(), s.energy.elastic_energy_J, s.energy.kinetic_energy_J, s.di_gyration};
 }
 
 std::vector<double> PlateCellSeries::pack() const {
   std::vector<double> out;
-  out.reserve(kPackedFields * samples_.size());
+  out.reserve(1 + kPackedFields * samples_.size());
+  out.push_back(-static_cast<double>(kPackedFields));
   for (const auto& s : samples_) {
+    const MembraneEnergySnapshot& e = s.energy;
     out.insert(out.end(), {s.time_s, s.di, s.inclination_rad, s.marker_phase_rad, s.centroid_m.x, s.centroid_m.y,
-                           s.centroid_m.z, s.velocity_m_s.x, s.velocity_m_s.y, s.velocity_m_s.z});
+                           s.centroid_m.z, s.velocity_m_s.x, s.velocity_m_s.y, s.velocity_m_s.z, e.external_work_J,
+                           e.viscous_dissipation_J, e.damping_dissipation_J, e.elastic_work_J, e.kinetic_step_loss_J,
+                           e.solver_residual_work_J, e.elastic_energy_J, e.kinetic_energy_J, s.di_gyration});
   }
   return out;
 }
 
 void PlateCellSeries::unpack(std::span<const double> flat) {
   samples_.clear();
-  for (std::size_t k = 0; k + kPackedFields <= flat.size(); k += kPackedFields) {
+  const bool header = !flat.empty() && flat[0] == -static_cast<double>(kPackedFields);
+  const std::size_t fields = header ? kPackedFields : kOldPackedFields;   // older: no energy books (zeros)
+  for (std::size_t k = header ? 1 : 0; k + fields <= flat.size(); k += fields) {
     const double* v = flat.data() + k;
-    samples_.push_back({.time_s = v[0], .di = v[1], .inclination_rad = v[2], .marker_phase_rad = v[3],
-                        .centroid_m = {v[4], v[5], v[6]}, .velocity_m_s = {v[7], v[8], v[9]}});
+    PlateCellSample s{.time_s = v[0], .di = v[1], .di_gyration = 0.0, .inclination_rad = v[2], .marker_phase_rad = v[3],
+                      .centroid_m = {v[4], v[5], v[6]}, .velocity_m_s = {v[7], v[8], v[9]}, .energy = {}};
+    if (header) {
+      s.energy = {.time_s = v[0], .external_work_J = v[10], .viscous_dissipation_J = v[11],
+                  .damping_dissipation_J = v[12], .elastic_work_J = v[13], .kinetic_step_loss_J = v[14],
+                  .solver_residual_work_J = v[15], .elastic_energy_J = v[16], .kinetic_energy_J = v[17]};
+      s.di_gyration = v[18];
+    }
+    samples_.push_back(s);
   }
+}
+
+nlohmann::json PlateCellSeries::energy_results() const {
+  const auto to_json = [](const MembraneEnergyBalance& b) {
+    return nlohmann::json{{"duration_s", b.duration_s},
+                          {"fluid_work_J", b.fluid_work_J},
+                          {"viscous_dissipation_J", b.viscous_dissipation_J},
+                          {"damping_dissipation_J", b.damping_dissipation_J},
+                          {"elastic_energy_change_J", b.elastic_energy_change_J},
+                          {"kinetic_energy_change_J", b.kinetic_energy_change_J},
+                          {"balance_residual_J", b.balance_residual_J},
+                          {"relative_residual", b.relative_residual()},
+                          {"implicit_step_loss_J", b.implicit_step_loss_J},
+                          {"solver_residual_work_J", b.solver_residual_work_J},
+                          {"books_error_J", b.books_error_J},
+                          {"mean_fluid_power_W", b.mean_fluid_power_W()},
+                          {"mean_viscous_power_W", b.mean_viscous_power_W()}};
+  };
+  nlohmann::json r;
+  if (samples_.empty()) return r;
+  // The stored energies are sampled from the first sample on (not at t = 0): the whole-run window starts there.
+  r["whole_run"] = to_json(membrane_energy_balance(samples_.front().energy, samples_.back().energy));
+  const std::size_t from = first_settled(samples_.size());
+  if (from + 1 < samples_.size()) {
+    r["second_half"] = to_json(membrane_energy_balance(samples_[from].energy, samples_.back().energy));
+  }
+  r["note"] = "fluid work = viscous + damping dissipation + change of elastic + kinetic energy + balance residual; "
+              "the residual is implicit Euler's loss + the minimisation's residual work (+ books error, round-off); "
+              "closed for a free membrane without the friction (docs/resolved-coupling.md, \"Power balance\")";
+  return r;
 }
 
 nlohmann::json PlateCellSeries::groups() const {
@@ -90,12 +139,13 @@ nlohmann::json PlateCellSeries::results() const {
 
 nlohmann::json PlateCellSeries::shear_results() const {
   nlohmann::json r;
-  std::vector<double> t, incl, phase, di;
+  std::vector<double> t, incl, phase, di, di_gyration;
   for (const auto& s : samples_) {
     t.push_back(s.time_s);
     incl.push_back(s.inclination_rad);
     phase.push_back(s.marker_phase_rad);
     di.push_back(s.di);
+    di_gyration.push_back(s.di_gyration);
   }
   // The mode is read after the release transient (the second half, as the means below): a tank-treading cell released
   // edge-on first turns to its inclination, which the whole-run angle range would count as swinging.
@@ -112,10 +162,11 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["tumbling_period_over_jeffery"] = tumble.period_s / jeffery;
   if (samples_.size() < 2 || from + 1 >= samples_.size()) return r;
   // Mean inclination and DI over the second half; the marker's mean angular rate there is the tank-treading rate.
-  double sum_incl = 0.0, sum_di = 0.0;
+  double sum_incl = 0.0, sum_di = 0.0, sum_di_gyration = 0.0;
   for (std::size_t i = from; i < samples_.size(); ++i) {
     sum_incl += incl[i];
     sum_di += di[i];
+    sum_di_gyration += di_gyration[i];
   }
   const double n = static_cast<double>(samples_.size() - from);
   unwrap(phase, 2.0 * std::numbers::pi);
@@ -123,6 +174,7 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["mean_inclination_rad"] = sum_incl / n;
   r["mean_inclination_deg"] = sum_incl / n * 180.0 / std::numbers::pi;
   r["di_mean"] = sum_di / n;
+  r["di_gyration_mean"] = sum_di_gyration / n;   // from the gyration radii: not set by single vertices (#26)
   r["tank_treading_frequency_hz"] = mode == FlowMode::tank_treading ? std::abs(rate) / (2.0 * std::numbers::pi) : 0.0;
   r["marker_rate_rad_s"] = rate;
   r["period_s"] = mode == FlowMode::tumbling ? tumble.period_s

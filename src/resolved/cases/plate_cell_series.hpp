@@ -11,16 +11,19 @@
 
 #include "common/vec3.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
+#include "resolved/membrane/membrane_energy_balance.hpp"
 
 namespace hs::resolved {
 
 struct PlateCellSample {
   double time_s = 0.0;
   double di = 0.0;
+  double di_gyration = 0.0;        // CellShape::gyration_deformation_index (all vertices count)
   double inclination_rad = 0.0;    // long axis in the shear plane (x, y) against the flow (x), in (-pi/2, pi/2]
   double marker_phase_rad = 0.0;   // marker vertex about the centroid in the shear plane, atan2(dy, dx)
   common::Vec3 centroid_m;         // unwrapped
   common::Vec3 velocity_m_s;       // mean vertex velocity
+  MembraneEnergySnapshot energy;   // the membrane's energy books and stored energies (power balance)
 };
 
 class PlateCellSeries {
@@ -28,10 +31,13 @@ class PlateCellSeries {
   explicit PlateCellSeries(const PlateCellConfig& config) : config_(config) {}
   void add(const PlateCellSample& s) { samples_.push_back(s); }
   [[nodiscard]] static std::vector<std::string> columns();
-  [[nodiscard]] std::vector<double> row(const PlateCellSample& s) const;
+  /// The row of sample i; its powers are the means since sample i - 1 (since the start for the first).
+  [[nodiscard]] std::vector<double> row(std::size_t i) const;
   [[nodiscard]] const std::vector<PlateCellSample>& samples() const { return samples_; }
   /// summary.json "results": the reduction of the case's flow and all dimensionless groups.
   [[nodiscard]] nlohmann::json results() const;
+  /// summary.json "membrane_energy": the power balance over the whole run and over the settled second half.
+  [[nodiscard]] nlohmann::json energy_results() const;
   [[nodiscard]] std::vector<double> pack() const;
   void unpack(std::span<const double> flat);
 

@@ -24,6 +24,10 @@ CellShape measure_cell_shape(std::span<const Vec3> vertices_m) {
     g += r * r.transpose();
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(g);   // eigenvalues ascending
+  for (int k = 0; k < 3; ++k) {
+    s.gyration_radii_m[static_cast<std::size_t>(k)] =
+        std::sqrt(std::max(0.0, eig.eigenvalues()(2 - k)) / static_cast<double>(vertices_m.size()));
+  }
   std::array<Vec3, 3> axes;
   std::array<double, 3> extents{};
   for (int k = 0; k < 3; ++k) {

@@ -15,10 +15,16 @@ struct CellShape {
   std::array<common::Vec3, 3> axes;          // unit principal axes, longest extent first
   std::array<double, 3> extents_m;           // vertex extent along each axis (max - min projection), descending
   std::array<double, 3> projected_m;         // extents along x, y, z (L_i for D_i = L_i / D0)
+  std::array<double, 3> gyration_radii_m{};  // sqrt of the gyration tensor's eigenvalues / n (RMS spread), descending
 
   /// DI = (L - B)/(L + B) with L, B the longest and shortest principal extents (seed paper section 4).
   [[nodiscard]] double deformation_index() const {
     return (extents_m[0] - extents_m[2]) / (extents_m[0] + extents_m[2]);
+  }
+  /// The same index from the gyration radii: every vertex counts, where the extents are set by the two extreme vertices
+  /// along each axis (a single vertex sticking out moves DI; issue #26's knob check). ~0.45 for the resting cell.
+  [[nodiscard]] double gyration_deformation_index() const {
+    return (gyration_radii_m[0] - gyration_radii_m[2]) / (gyration_radii_m[0] + gyration_radii_m[2]);
   }
 };
 

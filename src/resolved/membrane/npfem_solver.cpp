@@ -208,6 +208,16 @@ NpfemStepReport NpfemSolver::step() {
   const double fx = start(xn, y, x, g);
   const NpfemStepReport report =
       settings_.iteration == NpfemIteration::lbfgs ? minimise(x, y, g, fx) : projective_dynamics(x, y, g, fx);
+  // grad E(x) from the minimiser's gradient: g = grad E + M~ (x - y) / h^2 + grad R(x - x_n) / h (energy books).
+  const double inv_h2 = 1.0 / (h_us_ * h_us_);
+  Positions grad_e = g - inv_h2 * (damped_mass_ * (x - y));
+  double rayleigh = 0.0;
+  w.gv.setZero();
+  if (viscosity_) {
+    w.u.noalias() = x - xn;
+    rayleigh = viscosity_->rayleigh(w.u, w.gv);   // R and grad R do not see a uniform shift (below)
+    grad_e -= w.gv / h_us_;
+  }
   // g is quadratic along the three rigid translations (E and the damping Laplacian do not see them, 1^T M~ = m 1^T)
   // with its minimum at mean(x) = mean(y); a minimisation that starts from x_n and stops early (cap, short line
   // search) leaves part of that. Removing it makes sum_i m v_i change by exactly h sum_i f_i.
@@ -215,14 +225,12 @@ NpfemStepReport NpfemSolver::step() {
   w.correction[1].swap(w.correction[0]);
   w.correction[0].noalias() = x - y;
   w.corrections = std::min(w.corrections + 1, 2);
-  if (viscosity_) {
-    w.u.noalias() = x - xn;
-    stats_.viscous_dissipation_J += 2.0 * viscosity_->rayleigh(w.u, w.gv) / h_us_ / pN_um_per_J;
-  }
+  book_energy(xn, x, y, grad_e, rayleigh);
   Positions v = (x - xn) / h_us_;
   relax_velocity(v, x);
   x = xn + h_us_ * v;
   check_state(x, v);
+  stats_.external_work_J += h_us_ * dot(f_ext_pN_, v) / pN_um_per_J;   // the displacement the step really made
   x_um_ = x.rowwise() + c;
   v_um_us_ = v;
   apply_center_constraint();
@@ -235,6 +243,22 @@ NpfemStepReport NpfemSolver::step() {
     stats_.unconverged_gradient_sum += report.gradient_max_N * pN_per_N / (settings_.gradient_tolerance * force_scale_pN_);
   }
   return report;
+}
+
+void NpfemSolver::book_energy(const Positions& xn, const Positions& x, const Positions& y, const Positions& grad_e,
+                              double rayleigh) {
+  const Workspace& w = *work_;
+  const Positions u = x - xn;
+  const Positions v = u / h_us_;
+  const Positions mv = damped_mass_ * v;   // M v + h beta L v
+  const Positions dv = v - v_um_us_;
+  // The minimisation's gradient at the final x (after the uniform shift): what is left unbalanced.
+  const Positions residual = grad_e + (damped_mass_ * (x - y)) / (h_us_ * h_us_) + w.gv / h_us_;
+  stats_.viscous_dissipation_J += 2.0 * rayleigh / h_us_ / pN_um_per_J;
+  stats_.elastic_work_J += dot(grad_e, u) / pN_um_per_J;
+  stats_.damping_dissipation_J += (dot(v, mv) - mass_fg_ * v.squaredNorm()) / pN_um_per_J;
+  stats_.kinetic_step_loss_J += 0.5 * mass_fg_ * dv.squaredNorm() / pN_um_per_J;
+  stats_.solver_residual_work_J -= dot(residual, u) / pN_um_per_J;
 }
 
 double NpfemSolver::start(const Positions& xn, const Positions& y, Positions& x, Positions& g) {
@@ -333,6 +357,7 @@ double NpfemSolver::volume_m3() const {
 double NpfemSolver::rest_area_m2() const { return energy_->rest_area() * 1e-12; }
 double NpfemSolver::rest_volume_m3() const { return energy_->rest_volume() * 1e-18; }
 double NpfemSolver::vertex_mass_kg() const { return mass_fg_ * 1e-18; }
+double NpfemSolver::kinetic_energy_J() const { return 0.5 * mass_fg_ * v_um_us_.squaredNorm() / pN_um_per_J; }
 double NpfemSolver::elastic_energy_J() const {
   Positions gradient;
   return energy_->evaluate(Positions(x_um_.rowwise() - x_um_.colwise().mean()), gradient) / pN_um_per_J;

@@ -40,7 +40,18 @@ struct NpfemStatistics {
   long iteration_cap_stops = 0;      // unconverged because max_iterations was reached
   double unconverged_gradient_sum = 0.0;   // sum over unconverged steps of max |grad g| / tolerance (mean: diagnostics)
   double factorisation_s = 0.0;  // wall time of the one-time sparse Cholesky factorisations
+  // The membrane's energy books, joules, summed over the steps (docs/resolved-coupling.md, "Power balance"). Each step
+  // of the implicit Euler minimisation satisfies exactly (M the lumped mass, u = x_{n+1} - x_n = h v_{n+1}):
+  //   h f.v = dKE + M|v_{n+1} - v_n|^2 / 2 + grad E(x_{n+1}).u + h beta v.Lv + 2 R(u) / h - grad g(x_{n+1}).u,
+  // so external_work = dKE + elastic_work + viscous + damping + kinetic_step_loss + solver_residual_work to round-off,
+  // and elastic_work - dE is the step's elastic loss. Closed for a free membrane without the friction (the velocity
+  // relaxation and the centre constraint change v after the minimisation and are not booked).
   double viscous_dissipation_J = 0.0;   // energy the membrane viscosity dissipated, sum of 2 R(x - x_n) / h over steps
+  double external_work_J = 0.0;         // sum h f.v_{n+1}: the work of the external (fluid) force
+  double elastic_work_J = 0.0;          // sum grad E(x_{n+1}).(x_{n+1} - x_n): stored elastic energy + the step's loss
+  double damping_dissipation_J = 0.0;   // sum h beta v.Lv: the Rayleigh damping's dissipation
+  double kinetic_step_loss_J = 0.0;     // sum M|v_{n+1} - v_n|^2 / 2: implicit Euler's loss of kinetic energy
+  double solver_residual_work_J = 0.0;  // sum -grad g(x_{n+1}).u: the work of what the minimisation left unbalanced
 };
 
 /// One membrane. Implicit Euler as the minimisation g(x) = |x - y|^2_{M~}/(2 h^2) + E(x) (reference §3.1), with
@@ -107,10 +118,16 @@ class NpfemSolver {
   [[nodiscard]] double vertex_mass_kg() const;
   /// The membrane's elastic energy E(x) at the current positions, joules (power balances; one energy evaluation).
   [[nodiscard]] double elastic_energy_J() const;
+  /// The kinetic energy sum m |v|^2 / 2 of the lumped vertex masses, joules.
+  [[nodiscard]] double kinetic_energy_J() const;
   [[nodiscard]] double time_step_s() const { return h_us_ * 1e-6; }
   /// The per-step relaxation C_alpha this step and vertex mass give the deformation friction (0 = elastic).
   [[nodiscard]] double velocity_relaxation() const { return velocity_relaxation_; }
   [[nodiscard]] const NpfemStatistics& statistics() const { return stats_; }
+  /// The statistics as a flat vector for checkpoints (all but the wall time of the factorisations), and back; a
+  /// resumed run then reports the whole run's counts and energy books. A shorter vector (an older layout) is refused.
+  [[nodiscard]] std::vector<double> statistics_state() const;
+  void restore_statistics(std::span<const double> state);
 
  private:
   struct LineSearchResult {
@@ -133,6 +150,10 @@ class NpfemSolver {
   /// Both start from x with gradient g and objective fx (already evaluated) and leave the minimiser in x.
   NpfemStepReport minimise(Positions& x, const Positions& y, Positions& g, double fx);
   NpfemStepReport projective_dynamics(Positions& x, const Positions& y, Positions& g, double fx);
+  /// Books the step from x_n to x (v = (x - x_n) / h) into stats_ (NpfemStatistics); grad_e = grad E(x).
+  /// rayleigh = R(x - x_n), whose gradient is in the workspace (gv).
+  void book_energy(const Positions& xn, const Positions& x, const Positions& y, const Positions& grad_e,
+                   double rayleigh);
   void relax_velocity(Positions& v, const Positions& x) const;
   void apply_center_constraint();
   void check_state(const Positions& x, const Positions& v) const;

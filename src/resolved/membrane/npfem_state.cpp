@@ -43,6 +43,33 @@ void NpfemSolver::restore_state(std::span<const double> state) {
   restore_memory(state.subspan(k));
 }
 
+std::vector<double> NpfemSolver::statistics_state() const {
+  const NpfemStatistics& s = stats_;
+  return {static_cast<double>(s.steps), static_cast<double>(s.iterations), static_cast<double>(s.unconverged_steps),
+          static_cast<double>(s.line_search_stops), static_cast<double>(s.iteration_cap_stops),
+          s.unconverged_gradient_sum, s.viscous_dissipation_J, s.external_work_J, s.elastic_work_J,
+          s.damping_dissipation_J, s.kinetic_step_loss_J, s.solver_residual_work_J};
+}
+
+void NpfemSolver::restore_statistics(std::span<const double> state) {
+  if (state.size() != statistics_state().size()) {
+    throw std::invalid_argument("NpfemSolver::restore_statistics: the checkpoint's statistics have another layout");
+  }
+  NpfemStatistics& s = stats_;
+  s.steps = static_cast<long>(state[0]);
+  s.iterations = static_cast<long>(state[1]);
+  s.unconverged_steps = static_cast<long>(state[2]);
+  s.line_search_stops = static_cast<long>(state[3]);
+  s.iteration_cap_stops = static_cast<long>(state[4]);
+  s.unconverged_gradient_sum = state[5];
+  s.viscous_dissipation_J = state[6];
+  s.external_work_J = state[7];
+  s.elastic_work_J = state[8];
+  s.damping_dissipation_J = state[9];
+  s.kinetic_step_loss_J = state[10];
+  s.solver_residual_work_J = state[11];
+}
+
 void NpfemSolver::restore_memory(std::span<const double> memory) {
   Workspace& w = *work_;
   w.corrections = 0;

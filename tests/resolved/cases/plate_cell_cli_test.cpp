@@ -65,7 +65,8 @@ TEST(ShearCli, QuickRunGivesAFlowModeAndTheGroups) {
   EXPECT_NEAR(r["ca"].get<double>(), 1.025e-3 * 400.0 * 3.91e-6 / 1.0e-4, 1e-12);   // mu gamma a / k_s
   EXPECT_NEAR(r["reynolds"].get<double>(), 400.0 * 24e-6 * 24e-6 / 1e-6, 1e-12);
   EXPECT_NEAR(r["jeffery_period_s"].get<double>(), 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37) / 400.0, 1e-12);
-  for (const char* key : {"mean_inclination_rad", "tank_treading_frequency_hz", "di_mean", "period_s", "particle_reynolds"}) {
+  for (const char* key : {"mean_inclination_rad", "tank_treading_frequency_hz", "di_mean", "di_gyration_mean", "period_s",
+                          "particle_reynolds"}) {
     EXPECT_TRUE(r.contains(key)) << key;
   }
   // The stiff disc starts parallel to the plates and must start turning with the flow (clockwise: angle < 0).

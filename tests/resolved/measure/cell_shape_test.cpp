@@ -44,3 +44,21 @@ TEST(CellShape, SphereHasZeroDeformation) {
   EXPECT_NEAR(s.deformation_index(), 0.0, 1e-3);   // sampled sphere: extents equal to the sampling's resolution
   EXPECT_NEAR(s.projected_m[2], 6.0, 1e-12);
 }
+
+TEST(CellShape, GyrationRadiiOfABoxsCorners) {
+  // The 8 corners (+-a, +-b, +-c) of a box, rotated and shifted: each coordinate's mean square is a^2, b^2, c^2,
+  // so the gyration radii are a, b, c and the gyration DI (a - c) / (a + c), to round-off.
+  std::vector<Vec3> corners;
+  for (const double x : {-4.0, 4.0})
+    for (const double y : {-2.0, 2.0})
+      for (const double z : {-1.0, 1.0}) {
+        const double t = 0.4;
+        const Vec3 turned{x * std::cos(t) - y * std::sin(t), x * std::sin(t) + y * std::cos(t), z};
+        corners.push_back(turned + Vec3{3, 1, -2});
+      }
+  const auto s = measure_cell_shape(corners);
+  EXPECT_NEAR(s.gyration_radii_m[0], 4.0, 1e-12);
+  EXPECT_NEAR(s.gyration_radii_m[1], 2.0, 1e-12);
+  EXPECT_NEAR(s.gyration_radii_m[2], 1.0, 1e-12);
+  EXPECT_NEAR(s.gyration_deformation_index(), 3.0 / 5.0, 1e-12);
+}
