@@ -59,7 +59,7 @@ TEST(MembranePowerBalance, FluidWorkEqualsDissipationPlusStoredEnergyInTankTread
               b["duration_s"].get<double>(), work, viscous, b["damping_dissipation_J"].get<double>(),
               b["elastic_energy_change_J"].get<double>(), b["kinetic_energy_change_J"].get<double>(), residual,
               residual / work, b["implicit_step_loss_J"].get<double>(), b["solver_residual_work_J"].get<double>(),
-              b["books_error_J"].get<double>(), s["membrane_solve"]["unconverged_steps"].get<int>());
+              b["books_error_J"].get<double>(), s["numerics"]["membrane_solve"]["unconverged_steps"].get<int>());
 
   // The window is tank-treading: the membrane turns around a shape that keeps its orientation. (A tumbling cell's
   // marker turns with its axis.) Measured: marker 1.2 rad, axis 0.3 rad.
@@ -86,7 +86,7 @@ TEST(MembranePowerBalance, FluidWorkEqualsDissipationPlusStoredEnergyInTankTread
   // the bending), a step's elastic term u.H.u / 2 can have either sign (the shipped case's start-up: -2.3 % of its
   // viscous dissipation over 4-8 ms, with KE comparable to E). The bound allows twice the shear-mode estimate either
   // way (measured +1.5x: 8.3e-4 of the viscous dissipation here, 7.9e-4 over 20-40 ms; halving h halves it: 0.503x).
-  const double h_s = 2.0 * s["dt_s"].get<double>();
+  const double h_s = 2.0 * s["numerics"]["dt_s"].get<double>();
   const double t_c_s = kViscosity_N_s_m / kShearModulus_N_m;
   EXPECT_LT(std::abs(residual), 2.0 * h_s / (2.0 * t_c_s) * viscous) << "h / (2 t_c) = " << h_s / (2.0 * t_c_s);
 }
