@@ -141,6 +141,7 @@ ChannelFrame::ChannelFrame(const FvmSolver& fluid)
     : fluid_(fluid),
       points_(fluid.grid().fluid_fractions().data().size()),
       have_point_(points_.size(), 0),
+      section_(points_.size(), 0),
       flows_(points_.size()),
       flow_step_(points_.size(), -1) {}
 
@@ -151,6 +152,18 @@ Vec3 ChannelFrame::wall_normal(const Vec3& x_m) const {
   return gn >= kMedialGradient ? g / gn : Vec3{};
 }
 
+const ChannelPoint& ChannelFrame::cell_point(const std::array<int, 3>& cell, std::size_t flat) {
+  if (have_point_[flat] == 0) {
+    const FvmGrid& grid = fluid_.grid();
+    points_[flat] = channel_point(grid.shape(), grid.cell_centre_m(cell[0], cell[1], cell[2]), grid.dx_m());
+    const auto centre = grid.cell_of(points_[flat].centre_m);
+    section_[flat] = centre ? grid.fluid_fractions().index((*centre)[0], (*centre)[1], (*centre)[2]) : flat;
+    have_point_[flat] = 1;
+    if (centre && section_[flat] != flat) (void)cell_point(*centre, section_[flat]);
+  }
+  return points_[flat];
+}
+
 ChannelFrame::Local ChannelFrame::at(const Vec3& x_m) {
   const FvmGrid& grid = fluid_.grid();
   const auto cell = grid.cell_of(x_m);
@@ -159,15 +172,15 @@ ChannelFrame::Local ChannelFrame::at(const Vec3& x_m) {
     return {p.channel_radius_m, channel_flow(fluid_, p)};
   }
   const std::size_t c = grid.fluid_fractions().index((*cell)[0], (*cell)[1], (*cell)[2]);
-  if (have_point_[c] == 0) {
-    points_[c] = channel_point(grid.shape(), grid.cell_centre_m((*cell)[0], (*cell)[1], (*cell)[2]), grid.dx_m());
-    have_point_[c] = 1;
+  const double radius = cell_point(*cell, c).channel_radius_m;
+  // The section's flow is kept per cell holding a section centre, from that cell's own channel point: every cell
+  // whose medial centre falls there (in a tube: one layer of cells) shares it, whichever asks first.
+  const std::size_t s = section_[c];
+  if (flow_step_[s] != step_) {
+    flows_[s] = channel_flow(fluid_, points_[s]);
+    flow_step_[s] = step_;
   }
-  if (flow_step_[c] != step_) {
-    flows_[c] = channel_flow(fluid_, points_[c]);
-    flow_step_[c] = step_;
-  }
-  return {points_[c].channel_radius_m, flows_[c]};
+  return {radius, flows_[s]};
 }
 
 }  // namespace hs::unresolved

@@ -2,6 +2,7 @@
 // The closures' "tube" in any channel: lift direction, channel radius and mean velocity from the geometry.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -36,7 +37,8 @@ struct ChannelFlow {
 [[nodiscard]] ChannelFlow channel_flow(const FvmSolver& fluid, const ChannelPoint& at);
 
 /// The channel frame of a run: the geometry per grid cell, computed on first use and kept (the walls do not move),
-/// and the section's flow per cell, computed at most once per step.
+/// and the section's flow, computed at most once per step for each cell that holds a section centre (so a tube's
+/// layer of cells costs one section mean, not one per cell).
 class ChannelFrame {
  public:
   explicit ChannelFrame(const FvmSolver& fluid);
@@ -52,9 +54,13 @@ class ChannelFrame {
   void new_step() { ++step_; }
 
  private:
+  /// The channel point of a cell (flat index of its (i, j, k)), and of the cell holding its centre, on first use.
+  const ChannelPoint& cell_point(const std::array<int, 3>& cell, std::size_t flat);
+
   const FvmSolver& fluid_;
   std::vector<ChannelPoint> points_;
   std::vector<char> have_point_;
+  std::vector<std::size_t> section_;   // per cell: the cell holding its medial centre (whose point gives the flow)
   std::vector<ChannelFlow> flows_;
   std::vector<long> flow_step_;
   long step_ = 0;
