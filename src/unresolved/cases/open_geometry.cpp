@@ -13,6 +13,7 @@
 #include "common/run_context.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
 #include "unresolved/cases/grid_budget.hpp"
+#include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/cases/step_limits.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
@@ -100,14 +101,7 @@ OpenGeometryConfig parse_open_geometry(hs::common::ConfigFile& file, bool quick)
                                              "closures' inputs from the channel frame: leave it out or set it to false");
   }
   c.dx_m = numerics.positive("dx_m");
-  c.dt_s = numerics.positive("dt_s");
-  // 4, as tube-open: at viscous numbers of tens two PISO correctors let an odd-even mode grow (bifurcation_openings_test).
-  c.piso_correctors = static_cast<int>(numerics.integer_in_or("piso_correctors", 1, 20, 4));
-  c.pressure_coupling = pressure_coupling_from_name(numerics.one_of_or("pressure_coupling", {"piso", "projection"}, "piso"));
-  c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
-  c.end_time_s = numerics.positive("end_time_s");
-  c.average_from_fraction = numerics.number_in_or("average_from_fraction", 0.0, 0.95, 0.5);
-  c.checkpoint_every_wall_s = numerics.positive_or("checkpoint_every_wall_s", 600.0);   // DESIGN.md: every N minutes
+  read_loop_numerics(numerics, c);
   for (const auto& o : c.openings) {   // the developed parabola's centreline speed, 2 Q / (pi R^2)
     if (o.type != OpeningFlowType::flow_rate_inlet) continue;
     const double r = o.opening.radius_m;

@@ -31,7 +31,7 @@ struct OpenGeometryConfig {
   CouplingModel model{};
   double dx_m = 0.0;
   double dt_s = 0.0;
-  int piso_correctors = 4;
+  int piso_correctors = 4;                               // see loop_numerics.hpp
   PressureCoupling pressure_coupling = PressureCoupling::piso;
   int n_coupling = 1;
   double end_time_s = 0.0;

@@ -14,6 +14,7 @@
 #include "common/run_context.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
 #include "unresolved/cases/grid_budget.hpp"
+#include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/cases/step_limits.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
@@ -42,15 +43,7 @@ TubeOpenConfig parse_tube_open(hs::common::ConfigFile& file, bool quick) {
   c.particles = parse_particle_params(particles);
   c.model = parse_coupling_model(coupling, file.file().parent_path());
   c.cells_across = static_cast<int>(numerics.integer_in("cells_across_diameter", 4, 1000));
-  c.dt_s = numerics.positive("dt_s");
-  // 4, not the FVM's 2: at the viscous number nu dt / dx^2 = 60 two PISO correctors let an odd-even mode grow in the
-  // open tube and four settle it (measured, tests/unresolved/fvm/open_tube_test.cpp).
-  c.piso_correctors = static_cast<int>(numerics.integer_in_or("piso_correctors", 1, 20, 4));
-  c.pressure_coupling = pressure_coupling_from_name(numerics.one_of_or("pressure_coupling", {"piso", "projection"}, "piso"));
-  c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
-  c.end_time_s = numerics.positive("end_time_s");
-  c.average_from_fraction = numerics.number_in_or("average_from_fraction", 0.0, 0.95, 0.5);
-  c.checkpoint_every_wall_s = numerics.positive_or("checkpoint_every_wall_s", 600.0);   // DESIGN.md: every N minutes
+  read_loop_numerics(numerics, c);
   const double dx = c.diameter_m / c.cells_across;
   const double along = c.length_m / dx;
   if (std::abs(along - std::round(along)) > 1e-6 * along) {
