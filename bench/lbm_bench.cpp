@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -198,9 +199,11 @@ nlohmann::json report(const std::string& name, const char* scheme, int threads, 
 }  // namespace
 
 int run_lbm_bench(const hs::common::TaskOptions& options) {
-  const std::size_t triad_n = options.quick ? (std::size_t{1} << 22) : (std::size_t{1} << 25);
-  const int box_n = options.quick ? 64 : 128;
-  const double dx_um = options.quick ? 1.0 : 0.5;
+  // --quick measures only the target's own case (the 128^3 box, in-place AA scheme, 2 threads) in fewer steps, so
+  // its check is the target's; the triad keeps 3 x 128 MiB, past the last-level cache of the machines we run on.
+  const std::size_t triad_n = options.quick ? (std::size_t{1} << 24) : (std::size_t{1} << 25);
+  const int box_n = 128;
+  const double dx_um = 0.5;
   const long steps = options.quick ? 6 : 20;   // even: AA steps alternate between its two kinds
   const common::Tube tube(common::TubeSpec{.start_m = {0.0, 0.0, -1.0}, .end_m = {0.0, 0.0, 51.0}, .radius_m = 25.0});
   const std::string box_name = fmt::format("periodic_box_{}^3", box_n);
@@ -219,11 +222,14 @@ int run_lbm_bench(const hs::common::TaskOptions& options) {
              inplace_bw[0], inplace_bw[1]);
   fmt::print("{:<22} {:<27} {:>7} {:>10} {:>14} {:>10} {:>9}\n", "case", "scheme", "threads", "triad GB/s*",
              "roofline MLUPS", "MLUPS", "fraction");
-  for (const bool is_box : {true, false}) {
+  const std::vector<bool> box_or_tube = options.quick ? std::vector<bool>{true} : std::vector<bool>{true, false};
+  const std::vector<int> thread_counts = options.quick ? std::vector<int>{2} : std::vector<int>{1, 2};
+  for (const bool is_box : box_or_tube) {
     const std::string& name = is_box ? box_name : tube_name;
     for (const Scheme& scheme : kSchemes) {   // each lattice is built once and timed on 1 and 2 threads
+      if (options.quick && std::string_view(scheme.name) != "aa") continue;
       auto lattice = is_box ? periodic_box(box_n, scheme) : plasma_tube(dx_um, tube, scheme);
-      for (const int threads : {1, 2}) {
+      for (const int threads : thread_counts) {
         const std::string key = std::to_string(threads) + "_threads";
         const nlohmann::json row =
             report(name, scheme.name, threads, inplace_bw[static_cast<std::size_t>(threads - 1)],
@@ -255,13 +261,11 @@ int run_lbm_bench(const hs::common::TaskOptions& options) {
   out["repetitions"] = kRepetitions;
   out["cases"] = cases;
   common::CheckList checks;
-  if (options.quick) {
-    checks.skip("roofline_fraction", "--quick: a 64^3 box that fits the caches better than the 128^3 of the target");
-  } else {
-    // Issue #27: the collision changes must keep the in-place kernel's fraction of its own triad roofline.
-    expect_at_least(checks, options, "roofline_fraction (128^3 box, 2 threads)", top["roofline_fraction"].get<double>(), 0.82,
-                    "issue #27: not lower than the AA kernel's 0.82");
-  }
+  // Issue #27: the collision changes must keep the in-place kernel's fraction of its own triad roofline.
+  expect_at_least(checks, options,
+                  options.quick ? "roofline_fraction (128^3 box, aa, 2 threads, --quick: 6 steps a repetition)"
+                                : "roofline_fraction (128^3 box, 2 threads)",
+                  top["roofline_fraction"].get<double>(), 0.82, "issue #27: not lower than the AA kernel's 0.82");
   checks.write_to(out);
   out["provenance"] = common::provenance();
   if (options.json_file) common::write_json(*options.json_file, out);

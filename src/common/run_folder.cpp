@@ -79,6 +79,8 @@ nlohmann::json provenance() {
 }
 
 void write_json(const std::filesystem::path& file, const nlohmann::json& summary) {
+  // A --json FILE in a folder that does not exist yet is the user's new results folder, not an error.
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   write_file_atomic(file, summary.dump(2) + "\n");
 }
 
