@@ -31,7 +31,7 @@ inline void add_task_options(CLI::App& cmd, TaskArgs& args, const std::map<std::
   cmd.add_flag("--quick", args.quick, "a shorter version (CI)");
   cmd.add_option("--closures", args.extra, "closure set by name or file (validations that use closures)");
   cmd.add_option("--suspension-viscosity", args.suspension_viscosity,
-                 "none | einstein | pries_bulk: the cells' stress in CFD-DEM validations (pries: default pries_bulk)");
+                 "none | einstein | pries_bulk: the cells' stress in CFD-DEM validations (pries: default einstein; pries_bulk is a labelled sensitivity study)");
   cmd.add_option("--dataset", args.dataset, "the dataset CSV a dataset validation reads (default: the committed one)");
   cmd.add_option("--tighten", args.tighten,
                  "for tests of the failure path: every band divided by F, every target multiplied by F (a result, "

@@ -31,6 +31,10 @@ void check_tube_pries(const TubePriesConfig& c, const TubePriesResult& r, const 
                 fmt::format("{:+.2f}% (band +-{:.2g}%)", plasma_err, plasma_band));
   const bool finite = std::isfinite(r.ht_d) && std::isfinite(r.mu_rel) && r.ht_d > 0.0 && r.ht_d < 1.0;
   checks.expect(tube + ": Ht_d and mu_rel finite, 0 < Ht_d < 1", finite, fmt::format("Ht_d {}, mu_rel {}", r.ht_d, r.mu_rel));
+  if (c.suspension_viscosity == SuspensionViscosity::pries_bulk) {   // the brief: a sensitivity study is labelled
+    checks.skip(tube + ": a validation", "suspension_viscosity = pries_bulk puts Pries 1992's own wide-tube law into the "
+                                         "model: a sensitivity study, its agreement with Pries is no evidence");
+  }
   if (options.quick) {
     checks.skip(tube + ": steady, Ht_d and mu_rel vs Pries", "--quick: a run far shorter than the ~1 s the cell-free layer needs");
     return;

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -77,6 +78,24 @@ TEST(Cli, PriesTableAndPlotTakeTheJsonFilesName) {
   EXPECT_TRUE(fs::exists(dir / "first.json")) << r.output;
   EXPECT_TRUE(fs::exists(dir / "first.csv")) << r.output;
   EXPECT_FALSE(fs::exists(dir / "pries_validation.csv"));
+  // Issue #25: the validated model takes nothing from Pries 1992: the cells' stress is Einstein's law by default.
+  std::ifstream json(dir / "first.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"suspension_viscosity\": \"einstein\""), std::string::npos);
+  EXPECT_NE(text.find("\"sensitivity_study\": false"), std::string::npos);
+}
+
+TEST(Cli, PriesWithTheReferencesOwnLawIsLabelledASensitivityStudy) {
+  // pries_bulk is Pries 1992's wide-tube law: comparing with Pries 1992 is then no validation, and the output says so.
+  const auto dir = fs::temp_directory_path() / "hs_cli_pries_sensitivity";
+  fs::remove_all(dir);
+  const auto r = run("validate pries --quick --suspension-viscosity pries_bulk --json " + (dir / "bulk.json").string());
+  EXPECT_EQ(r.code, 0) << r.output;   // --quick: its checks are the plasma run and finiteness
+  EXPECT_NE(r.output.find("a validation: suspension_viscosity = pries_bulk"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("sensitivity study: pries_bulk is Pries 1992's own law"), std::string::npos) << r.output;
+  std::ifstream json(dir / "bulk.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"sensitivity_study\": true"), std::string::npos);
 }
 
 TEST(Cli, CampaignTakesTheFolderOrItsToml) {
