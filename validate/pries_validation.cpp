@@ -8,6 +8,11 @@
 #include <cstdlib>
 #include <numbers>
 #include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+#include <utility>
 #include <optional>
 #include <vector>
 
@@ -19,7 +24,9 @@
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/run_folder.hpp"
+#include "unresolved/cases/coupling_model.hpp"
 #include "unresolved/cases/tube_pries.hpp"
+#include "unresolved/cases/tube_pries_measurement.hpp"
 #include "validate/tube_pries_checks.hpp"
 #include "validate/tube_pries_comparison.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
@@ -78,8 +85,9 @@ TubePriesConfig config_for(double diameter_um, double hematocrit, bool quick, co
   c.diameter_m = diameter_um * 1e-6;
   c.cells_across = quick ? 6 : 10;
   const double dx = c.diameter_m / c.cells_across;
-  // Periodic length about 2 D (at least 30 um, four RBC diameters), a whole number of cells.
-  c.length_m = dx * std::ceil(std::max(quick ? 1.0 * c.diameter_m : 2.0 * c.diameter_m, 30e-6) / dx);
+  // Periodic length 4 D (issue #25: >= 4 D, so the periodic images of a cell's disturbance do not meet; at least
+  // 30 um, four RBC diameters), a whole number of cells; --quick: 1 D.
+  c.length_m = dx * std::ceil(std::max(quick ? 1.0 * c.diameter_m : 4.0 * c.diameter_m, 30e-6) / dx);
   c.tube_hematocrit = hematocrit;
   c.fluid = {.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6};   // plasma, rbc_blood_properties.csv
   const double mu = c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s;
@@ -111,22 +119,72 @@ fs::path output_dir(const hs::common::TaskOptions& options) {
 
 namespace {
 
+/// Seeds per table entry (issue #25: at least 3; the entry is their mean, its uncertainty their scatter);
+/// --quick: one.
+constexpr int kSeeds = 3;
+
+/// What decides a tube's result: a stored tube is reused only when this matches (model, closure files' contents,
+/// numerics, seed), so an interrupted table resumes and a changed model reruns.
+std::string fingerprint(const TubePriesConfig& c, bool quick) {
+  nlohmann::json j;
+  write_model_summary(c.coupling_model(), j);
+  for (const auto* spec : {&c.drag, &c.lift, &c.deformation}) {
+    if (spec->model != "expression") continue;
+    std::ifstream in(spec->file, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    j["closure_content_hash"].push_back(std::hash<std::string>{}(text));
+  }
+  j["tube"] = {c.diameter_m, c.length_m, c.tube_hematocrit, c.cells_across, c.dt_s, c.n_coupling, c.end_time_s,
+               c.seed, c.steady_tolerance, c.average_from_fraction, quick};
+  return j.dump();
+}
+
+/// One tube: read from the archive when its fingerprint matches, otherwise run and archive it (atomically).
+TubePriesResult tube_result(const TubePriesConfig& c, bool quick, const fs::path& archive) {
+  const std::string key = fingerprint(c, quick);
+  if (fs::exists(archive)) {
+    std::ifstream in(archive);
+    const nlohmann::json stored = nlohmann::json::parse(in, nullptr, false);
+    if (!stored.is_discarded() && stored.value("fingerprint", "") == key) {
+      fmt::print("pries: {} reused (same model, numerics and seed)\n", archive.filename().string());
+      return tube_pries_result(stored.at("summary"));
+    }
+  }
+  TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
+  hs::common::write_json(archive, {{"fingerprint", key}, {"summary", r.summary}});
+  return r;
+}
+
+/// Mean and standard error (sample standard deviation / sqrt(n); 0 for one value).
+std::pair<double, double> mean_and_se(const std::vector<double>& v) {
+  double mean = 0.0;
+  for (const double x : v) mean += x / static_cast<double>(v.size());
+  if (v.size() < 2) return {mean, 0.0};
+  double ss = 0.0;
+  for (const double x : v) ss += (x - mean) * (x - mean);
+  return {mean, std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()))};
+}
+
 int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCorrection wall,
                     const std::string& default_stem) {
   const fs::path dir = output_dir(options);
   // The table and plot go beside the JSON and share its name (results/X.json, X.csv, X.png), so runs kept side by
-  // side in one folder do not overwrite each other's.
+  // side in one folder do not overwrite each other's; each tube's summary is archived in X.tubes/.
   const std::string stem = options.json_file ? options.json_file->stem().string() : default_stem;
   const fs::path csv_path = dir / (stem + ".csv");
+  const fs::path tubes_dir = dir / (stem + ".tubes");
   std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
-                                       "mu_rel_error_pct", "rbc_count", "steady"});
+                                       "mu_rel_error_pct", "rbc_count", "steady", "seeds", "ht_d_error_se_pct", "mu_rel_error_se_pct",
+                                       "discharge_hematocrit_se", "relative_apparent_viscosity_se"});
   const std::string closures = options.extra.empty() ? kDefaultClosures : options.extra;
+  const int seeds = options.quick ? 1 : kSeeds;
   nlohmann::json result = {{"validation", "pries"},
                            {"reference", "Pries, Neuhaus & Gaehtgens 1992, Am J Physiol 263:H1770 (in vitro, high shear)"},
                            {"closures", closures},
                            {"wall_correction", hs::closures::wall_correction_name(wall)},
-                           {"quick", options.quick}};
+                           {"quick", options.quick},
+                           {"seeds", seeds}};
   const SuspensionViscosity viscosity =
       suspension_viscosity_from_name(options.suspension_viscosity.empty() ? kDefaultViscosity : options.suspension_viscosity);
   result["suspension_viscosity"] = suspension_viscosity_name(viscosity);
@@ -134,27 +192,53 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   result["sensitivity_study"] = sensitivity;
   double max_error = 0.0;
   hs::common::CheckList checks;
+  const TubePriesCheckOptions check_options{.quick = options.quick, .tighten = options.tighten};
   for (const double d_um : {30.0, 50.0, 100.0}) {
     for (const double ht : {0.05, 0.10, 0.15}) {
-      TubePriesConfig c = config_for(d_um, ht, options.quick, closures, viscosity);
-      c.wall_correction = wall;
-      TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
-      add_pries_comparison(c, r);
-      const double err = std::max(std::abs(r.ht_d_error_pct), std::abs(r.mu_rel_error_pct));
-      max_error = std::max(max_error, err);
-      check_tube_pries(c, r, {.quick = options.quick, .tighten = options.tighten}, checks);
-      fmt::print("pries: D = {:5.1f} um Ht_c = {:.2f}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
-                 d_um, ht, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
-      std::fflush(stdout);   // one line per tube as it finishes, also into a log file (the table takes ~16 min)
-      csv->row({d_um, ht, r.summary["results"]["tube_hematocrit"].get<double>(), r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries,
-               r.mu_rel_error_pct, r.summary["results"]["rbc_count"].get<double>(), r.summary["results"]["steady"].get<bool>() ? 1.0 : 0.0});
-      nlohmann::json row = r.summary["results"];   // one flat row per tube: results, model choices, groups
-      row.update(r.summary["numerics"]);
-      row["groups"] = r.summary["groups"];
-      row["n_coupling"] = c.n_coupling;
-      row["dt_s"] = c.dt_s;
-      row["end_time_s"] = c.end_time_s;
-      result["cases"].push_back(row);
+      const std::string entry = fmt::format("D = {:.0f} um, Ht_c {:.2f}", d_um, ht);
+      std::vector<double> ht_d, mu_rel, ht_d_err, mu_err, ht_t, ht_d_ref, mu_ref, count;
+      bool all_steady = true;
+      nlohmann::json runs = nlohmann::json::array();
+      for (int seed = 1; seed <= seeds; ++seed) {
+        TubePriesConfig c = config_for(d_um, ht, options.quick, closures, viscosity);
+        c.wall_correction = wall;
+        c.seed = seed;
+        TubePriesResult r = tube_result(c, options.quick, tubes_dir / fmt::format("D{:.0f}_ht{:.2f}_seed{}.json", d_um, ht, seed));
+        add_pries_comparison(c, r);
+        all_steady = check_tube_pries_run(fmt::format("{}, seed {}", entry, seed), c, r, check_options, checks) && all_steady;
+        fmt::print("pries: {} seed {}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
+                   entry, seed, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
+        std::fflush(stdout);   // one line per tube as it finishes, also into a log file (a tube takes minutes)
+        ht_d.push_back(r.ht_d);
+        mu_rel.push_back(r.mu_rel);
+        ht_d_err.push_back(r.ht_d_error_pct);
+        mu_err.push_back(r.mu_rel_error_pct);
+        ht_t.push_back(r.summary["results"]["tube_hematocrit"].get<double>());
+        ht_d_ref.push_back(r.ht_d_pries);
+        mu_ref.push_back(r.mu_rel_pries);
+        count.push_back(r.summary["results"]["rbc_count"].get<double>());
+        nlohmann::json row = r.summary["results"];   // one flat row per tube: results, model choices, groups
+        row.update(r.summary["numerics"]);
+        row["groups"] = r.summary["groups"];
+        row["seed"] = seed;
+        row["n_coupling"] = c.n_coupling;
+        row["dt_s"] = c.dt_s;
+        row["end_time_s"] = c.end_time_s;
+        row["length_m"] = c.length_m;
+        runs.push_back(row);
+      }
+      const auto [e_ht, se_ht] = mean_and_se(ht_d_err);
+      const auto [e_mu, se_mu] = mean_and_se(mu_err);
+      if (!options.quick) check_pries_band(fmt::format("{} (mean of {} seeds)", entry, seeds), e_ht, e_mu, all_steady, check_options, checks);
+      max_error = std::max({max_error, std::abs(e_ht), std::abs(e_mu)});
+      const double mean_ht_d = mean_and_se(ht_d).first, mean_mu = mean_and_se(mu_rel).first;
+      csv->row({d_um, ht, mean_and_se(ht_t).first, mean_ht_d, mean_and_se(ht_d_ref).first, e_ht, mean_mu, mean_and_se(mu_ref).first,
+               e_mu, mean_and_se(count).first, all_steady ? 1.0 : 0.0, static_cast<double>(seeds), se_ht, se_mu,
+               mean_and_se(ht_d).second, mean_and_se(mu_rel).second});
+      result["entries"].push_back({{"diameter_um", d_um}, {"tube_hematocrit_requested", ht}, {"seeds", seeds},
+                                   {"discharge_hematocrit", mean_ht_d}, {"relative_apparent_viscosity", mean_mu},
+                                   {"ht_d_error_pct", e_ht}, {"ht_d_error_se_pct", se_ht}, {"mu_rel_error_pct", e_mu},
+                                   {"mu_rel_error_se_pct", se_mu}, {"steady", all_steady}, {"runs", runs}});
     }
   }
   result["max_error_pct"] = max_error;
@@ -167,8 +251,8 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
                                       csv_path.string(), png.string());
   result["plot"] = std::system(cmd.c_str()) == 0 ? png.string() : "";
   hs::common::write_json(options.json_file ? *options.json_file : dir / (stem + ".json"), result);
-  fmt::print("pries: max error {:.1f}%{}{} (table {}, plot {})\n", max_error,
-             options.quick ? " of --quick runs, not a validation" : "",
+  fmt::print("pries: max error {:.1f}% (entry means over {} seed{}){}{} (table {}, plot {})\n", max_error, seeds,
+             seeds == 1 ? "" : "s", options.quick ? " of --quick runs, not a validation" : "",
              sensitivity ? " (sensitivity study: pries_bulk is Pries 1992's own law, not a validation)" : "",
              csv_path.string(), png.string());
   checks.print("pries");

@@ -85,6 +85,23 @@ TEST(Cli, PriesTableAndPlotTakeTheJsonFilesName) {
   EXPECT_NE(text.find("\"sensitivity_study\": false"), std::string::npos);
 }
 
+TEST(Cli, PriesResumesFromItsArchivedTubes) {
+  // Issue #25: the table is a resumable campaign: each tube's summary is archived beside the JSON (X.tubes/) and
+  // reused when its model, numerics and seed match; a changed model runs again.
+  const auto dir = fs::temp_directory_path() / "hs_cli_pries_resume";
+  fs::remove_all(dir);
+  const std::string json = (dir / "table.json").string();
+  ASSERT_EQ(run("validate pries --quick --json " + json).code, 0);
+  EXPECT_TRUE(fs::exists(dir / "table.tubes" / "D30_ht0.10_seed1.json"));
+  const auto again = run("validate pries --quick --json " + json);
+  EXPECT_EQ(again.code, 0) << again.output;
+  std::size_t reused = 0;
+  for (std::size_t at = again.output.find("reused"); at != std::string::npos; at = again.output.find("reused", at + 1)) ++reused;
+  EXPECT_EQ(reused, 9u) << again.output;   // 3 diameters x 3 hematocrits, one seed with --quick
+  const auto other = run("validate pries --quick --suspension-viscosity none --json " + json);
+  EXPECT_EQ(other.output.find("reused"), std::string::npos) << other.output;
+}
+
 TEST(Cli, PriesWithTheReferencesOwnLawIsLabelledASensitivityStudy) {
   // pries_bulk is Pries 1992's wide-tube law: comparing with Pries 1992 is then no validation, and the output says so.
   const auto dir = fs::temp_directory_path() / "hs_cli_pries_sensitivity";

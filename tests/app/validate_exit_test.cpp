@@ -78,19 +78,19 @@ TEST(ValidateExitCodes, PriesQuickChecksThePlasmaAndSkipsThePriesBand) {
   const Result r = run("validate pries --quick --json " + (dir / "quick.json").string());
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(says(r, "not a validation")) << r.output;
-  EXPECT_TRUE(says(r, "skipped D = 30 um, Ht_c 0.05: steady, Ht_d and mu_rel vs Pries")) << r.output;
+  EXPECT_TRUE(says(r, "skipped D = 30 um, Ht_c 0.05, seed 1: steady, Ht_d and mu_rel vs Pries")) << r.output;
   // The default is the committed set by name ("resolved"): drag, lift and deformation, as its folder gives them (#31).
   std::ifstream in(dir / "quick.json");
   const auto quick = nlohmann::json::parse(in);
   EXPECT_EQ(quick["closures"], "resolved");
-  const auto& tube = quick["cases"][0];
+  const auto& tube = quick["entries"][0]["runs"][0];
   EXPECT_NE(tube["drag"].get<std::string>().find("cd_di_rep.toml"), std::string::npos) << tube.dump();
   EXPECT_NE(tube["lift"].get<std::string>().find("cl_shear_ratio_rep.toml"), std::string::npos) << tube.dump();
   EXPECT_NE(tube["deformation"].get<std::string>().find("di_gamma_ur.toml"), std::string::npos) << tube.dump();
   // The plasma-only reference is within 5.6% of Poiseuille at 6 cells across; a 100x narrower band must fail.
   const Result narrow = run("validate pries --quick --tighten 100 --json " + (dir / "narrow.json").string());
   EXPECT_EQ(narrow.code, 1) << narrow.output;
-  EXPECT_TRUE(says(narrow, "FAILED  D = 30 um, Ht_c 0.05: plasma flow vs Poiseuille")) << narrow.output;
+  EXPECT_TRUE(says(narrow, "FAILED  D = 30 um, Ht_c 0.05, seed 1: plasma flow vs Poiseuille")) << narrow.output;
 }
 
 TEST(ValidateExitCodes, LiftTransferFailsWithTheCommittedClosure) {

@@ -12,6 +12,7 @@
 #include "common/dimensionless_groups.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
+#include "common/linear_trend.hpp"
 #include "unresolved/cases/cfd_dem_frames.hpp"
 #include "unresolved/dem/insertion.hpp"
 
@@ -36,17 +37,20 @@ double rbc_flow_rate(const DemSystem& dem, double length_m) {
   return sum / length_m;   // the mean over the periodic length of the flux through a cross-section
 }
 
-/// Means over the last (1 - from_fraction) of the series, and Ht_d of that window's two halves (steadiness).
+/// Means over the last (1 - from_fraction) of the series, Ht_d of that window's two halves, and the least-squares
+/// trends of Ht_d and of mu_rel = Q_plasma / Q_blood over the window (steadiness).
 struct SeriesAverages {
   double q_blood_m3_s, q_rbc_m3_s, ht_d_first_half, ht_d_second_half;
   long samples;
+  hs::common::LinearTrend ht_d, mu_rel;
 };
 
-SeriesAverages average_series(const std::vector<std::vector<double>>& rows, double from_fraction) {
+SeriesAverages average_series(const std::vector<std::vector<double>>& rows, double from_fraction, double q_plasma_m3_s) {
   const long total = static_cast<long>(rows.size());
   const long first = static_cast<long>(from_fraction * static_cast<double>(total));
   double sum_blood = 0.0, sum_rbc = 0.0;
   std::array<double, 2> half_rbc{}, half_blood{};
+  hs::common::LinearTrend ht_d, mu_rel;
   for (long s = first; s < total; ++s) {
     const std::vector<double>& x = rows[static_cast<std::size_t>(s)];
     sum_blood += x[1];
@@ -54,9 +58,11 @@ SeriesAverages average_series(const std::vector<std::vector<double>>& rows, doub
     const std::size_t half = 2 * (s - first) < total - first ? 0 : 1;
     half_rbc[half] += x[2];
     half_blood[half] += x[1];
+    ht_d.add(x[0], x[2] / x[1]);
+    mu_rel.add(x[0], q_plasma_m3_s / x[1]);
   }
   const double n = static_cast<double>(total - first);
-  return {sum_blood / n, sum_rbc / n, half_rbc[0] / half_blood[0], half_rbc[1] / half_blood[1], total - first};
+  return {sum_blood / n, sum_rbc / n, half_rbc[0] / half_blood[0], half_rbc[1] / half_blood[1], total - first, ht_d, mu_rel};
 }
 
 }  // namespace
@@ -122,7 +128,7 @@ void TubePriesMeasurement::read_state(const hs::common::Checkpoint& cp) {
 }
 
 nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std::vector<std::vector<double>>& rows) const {
-  const SeriesAverages avg = average_series(rows, c_.average_from_fraction);
+  const SeriesAverages avg = average_series(rows, c_.average_from_fraction, q_plasma_m3_s_);
   const double r_tube = 0.5 * c_.diameter_m;
   const double q_blood = avg.q_blood_m3_s;
   const double mu = c_.fluid.density_kg_m3 * c_.fluid.kinematic_viscosity_m2_s;
@@ -141,7 +147,13 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
   res["flow_rate_blood_m3_s"] = q_blood;
   res["flow_rate_rbc_m3_s"] = avg.q_rbc_m3_s;
   res["flow_rate_plasma_only_m3_s"] = q_plasma_m3_s_;
-  res["steady"] = std::abs(avg.ht_d_second_half - avg.ht_d_first_half) <= c_.steady_tolerance * std::abs(avg.ht_d_second_half);
+  // Steady (issue #25): over the averaging window, the least-squares trend moves neither Ht_d nor mu_rel by more
+  // than steady_tolerance of its mean. The two halves' difference stays as a diagnostic.
+  const double ht_d_trend = avg.ht_d.change_over_window() / avg.ht_d.mean();
+  const double mu_rel_trend = avg.mu_rel.change_over_window() / avg.mu_rel.mean();
+  res["steady"] = std::abs(ht_d_trend) <= c_.steady_tolerance && std::abs(mu_rel_trend) <= c_.steady_tolerance;
+  res["ht_d_trend_over_window"] = ht_d_trend;
+  res["mu_rel_trend_over_window"] = mu_rel_trend;
   res["ht_d_change_between_averaging_halves"] = avg.ht_d_second_half - avg.ht_d_first_half;
   num["averaged_steps"] = avg.samples;
   res["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
