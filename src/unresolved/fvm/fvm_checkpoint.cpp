@@ -81,6 +81,8 @@ void FvmSolver::read_state(const hs::common::Checkpoint& cp, const std::string& 
   if (steps.size() != 1) throw hs::common::ConfigError("checkpoint: \"" + prefix + "steps\" must hold one value");
   steps_ = steps[0];
   coefficients_dirty_ = true;
+  if (variable_viscosity_) fill_cell_ghosts(visc_);
+  update_viscous_force();   // derived from the restored velocity and viscosity: a resumed run samples the same stress
 }
 
 }  // namespace hs::unresolved

@@ -159,4 +159,36 @@ void FvmSolver::compute_drive_response() {
   drive_response_flux_ = flux / grid_.node_count(c, c);
 }
 
+/// The viscous links of the momentum row without its eps: div(tau) = rho nu / dx^2 sum_l SW_l m_l (u_l - u_P) at every
+/// active node, with the Shortley-Weller weights, link viscosities and wall values the fluid itself uses, so a
+/// particle's V_p div(tau) is the fluid's own stress (issue #25), not a pointwise Laplacian of the interpolant.
+void FvmSolver::update_viscous_force() {
+  const double mu_h2 = fluid_.density_kg_m3 * fluid_.kinematic_viscosity_m2_s / (h_ * h_);
+  for (int c = 0; c < 3; ++c) {
+    const Component& comp = comp_[static_cast<std::size_t>(c)];
+    const BlockField<double>& u = u_[static_cast<std::size_t>(c)];
+    const long rows = static_cast<long>(comp.node.size());
+    Eigen::VectorXd nodal(rows);
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
+    for (long r = 0; r < rows; ++r) {
+      const long idx = comp.node[static_cast<std::size_t>(r)];
+      const int lid = comp.link_id[static_cast<std::size_t>(r)];
+      const auto& slot = comp.slot[static_cast<std::size_t>(r)];
+      const double up = u[static_cast<std::size_t>(idx)];
+      double sum = 0.0;
+      for (int dir = 0; dir < 6; ++dir) {
+        if (slot[static_cast<std::size_t>(dir) + 1] == -2) continue;
+        const NodeLink link = lid < 0 ? NodeLink{} : comp.links[static_cast<std::size_t>(lid)][static_cast<std::size_t>(dir)];
+        if (link.type == NodeLink::Type::neumann) continue;
+        const double w = shortley_weller(comp, lid, dir) * (variable_viscosity_ ? link_viscosity(c, idx, dir) : 1.0);
+        const long nb = idx + (dir % 2 == 1 ? 1 : -1) * u.stride(dir / 2);
+        const double ul = link.type == NodeLink::Type::active ? u[static_cast<std::size_t>(nb)] : link.value;
+        sum += w * (ul - up);
+      }
+      nodal[r] = mu_h2 * sum;
+    }
+    scatter(c, nodal, viscous_force_[static_cast<std::size_t>(c)]);
+  }
+}
+
 }  // namespace hs::unresolved

@@ -51,18 +51,8 @@ std::array<Vec3, 3> FvmSolver::velocity_gradient_at(const Vec3& x_m) const {
 }
 
 Vec3 FvmSolver::viscous_force_density_at(const Vec3& x_m) const {
-  const Vec3 centre = velocity_at(x_m);
-  Vec3 lap;
-  for (int b = 0; b < 3; ++b) {
-    Vec3 d;
-    d[b] = h_;
-    lap += (velocity_at(x_m + d) - 2.0 * centre + velocity_at(x_m - d)) / (h_ * h_);
-  }
-  double factor = 1.0;
-  if (variable_viscosity_) {
-    if (const auto cell = grid_.cell_of(x_m)) factor = visc_((*cell)[0], (*cell)[1], (*cell)[2]);
-  }
-  return factor * fluid_.density_kg_m3 * fluid_.kinematic_viscosity_m2_s * lap;
+  return {interpolate(0, viscous_force_[0], x_m), interpolate(1, viscous_force_[1], x_m),
+          interpolate(2, viscous_force_[2], x_m)};
 }
 
 Vec3 FvmSolver::pressure_gradient_at(const Vec3& x_m) const {

@@ -48,6 +48,8 @@ FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const Pi
   p_ = BlockField<double>(n, 0.0);
   for (int c = 0; c < 3; ++c) {
     u_[static_cast<std::size_t>(c)] = grid.fixed_values(c);
+    viscous_force_[static_cast<std::size_t>(c)] = grid.fixed_values(c);   // the face field's shape; 0 off the unknowns
+    for (double& v : viscous_force_[static_cast<std::size_t>(c)].data()) v = 0.0;
     hb_[static_cast<std::size_t>(c)] = grid.fixed_values(c);
     phi_[static_cast<std::size_t>(c)] = BlockField<double>(n, 0.0);
     build_component(c);
@@ -55,6 +57,7 @@ FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const Pi
   build_pressure_rows();
   if (!grid.openings().empty()) build_opening_boundaries();
   update_fluxes();
+  update_viscous_force();
 }
 
 void FvmSolver::build_component(int c) {
@@ -153,6 +156,7 @@ void FvmSolver::step() {
   for (int corr = 0; corr < correctors; ++corr) pressure_corrector(corr + 1 == correctors);
   update_fluxes();
   if (drive_.mode == FlowDrive::Mode::flow_rate) correct_flow_rate();
+  update_viscous_force();
   time_s_ += piso_.dt_s;
   ++steps_;
   stats_.courant = courant_number();

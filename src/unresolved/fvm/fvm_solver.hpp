@@ -125,9 +125,10 @@ class FvmSolver {
   [[nodiscard]] hs::common::Vec3 velocity_at(const hs::common::Vec3& x_m) const;
   /// grad u at a point: g[a][b] = d u_a / d x_b, 1/s (central differences of velocity_at over one cell).
   [[nodiscard]] std::array<hs::common::Vec3, 3> velocity_gradient_at(const hs::common::Vec3& x_m) const;
-  /// div(tau) = mu lap(u) at a point, N/m^3 (second differences of velocity_at over one cell, times the viscosity
-  /// factor of the cell holding the point): the viscous force density the coupling turns into V_p div(tau) on a
-  /// particle (model A).
+  /// div(tau) = div(mu grad u) at a point, N/m^3: the fluid's own viscous stencil at the velocity nodes (its
+  /// Shortley-Weller weights, link viscosities and wall values; update_viscous_force), interpolated as the velocity
+  /// is. The viscous force density the coupling turns into V_p div(tau) on a particle (model A); where the viscosity
+  /// jumps (a cell-rich core) it keeps the fluid's balance, which mu lap(u) of the interpolant does not.
   [[nodiscard]] hs::common::Vec3 viscous_force_density_at(const hs::common::Vec3& x_m) const;
   /// grad p at a point, Pa/m, including the driving mean gradient.
   [[nodiscard]] hs::common::Vec3 pressure_gradient_at(const hs::common::Vec3& x_m) const;
@@ -177,6 +178,7 @@ class FvmSolver {
   void pressure_corrector(bool final);
   void correct_flow_rate();
   void update_fluxes();
+  void update_viscous_force();
   void scatter(int c, const Eigen::VectorXd& values, BlockField<double>& field) const;
   void fill_velocity_ghosts(int c, BlockField<double>& field) const;
   void fill_cell_ghosts(BlockField<double>& field) const;
@@ -203,6 +205,7 @@ class FvmSolver {
 
   std::array<Component, 3> comp_;
   std::array<BlockField<double>, 3> u_;      // face velocities, m/s
+  std::array<BlockField<double>, 3> viscous_force_;   // div(tau) at the velocity nodes, N/m^3 (update_viscous_force)
   std::array<BlockField<double>, 3> hb_;     // H/A on faces (PISO work field)
   std::array<BlockField<double>, 3> phi_;    // face volume fluxes eps * aperture * dx^2 * u, m^3/s
   BlockField<double> p_;                     // kinematic pressure (periodic part), m^2/s^2
