@@ -29,7 +29,8 @@ constexpr double kMaxTauDefault = 30.5;
 /// (docs/resolved-coupling.md, "The lattice fluid's memory"): a Ca = 1 cell released at y/H = 0.35 in the shear case
 /// (TRT, 2-point kernel, ibm_reaction) moves toward the wall by 0.081 H in 30 ms at Wi 0.053 (tau 16.5), 0.019 at
 /// 0.013 (tau 8.5), 0.005 at 0.0033 (tau 4.5): in proportion to Wi, while the centre is stable in Stokes flow. At 0.005
-/// that drift is ~0.008 H per 30 ms and the centreline's growth rate ~1.7 / s (18.5 / s at 0.053).
+/// (tau 5.40, 3.3x the steps of 0.04) it moves 0.006 H (measured), and the centreline's growth rate scales to ~1.8 / s
+/// (18.6 / s measured at 0.053). A smaller cap costs steps as 1 / sqrt(Wi).
 constexpr double kMaxLatticeWeissenbergDefault = 0.005;
 
 /// Half the thickness of the Evans-Fung biconcave disc at its thickest (2.6 um; resolved-methods.md 8.6).

@@ -5,6 +5,7 @@
 // control: the same release drifts several times the bound there.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
