@@ -3,6 +3,7 @@
 #include "resolved/cases/cell_numerics.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -23,6 +24,14 @@ constexpr double kMassFactorPerViscosityStep = 1.25;
 /// Largest relaxation time: one RBC at r* = 0.2 in the campaign tube ran stably at tau = 30.5 (Re 0.2) and diverged
 /// near the cell after ~540 steps at tau = 60.5 (Re 0.1, lattice velocity 0.04), measured; docs/resolved-coupling.md.
 constexpr double kMaxTauDefault = 30.5;
+/// Largest lattice Weissenberg number Wi = gamma_ref (tau - 1/2) dt: the lattice fluid's stress relaxes over
+/// (tau - 1/2) dt, and against the flow's time 1 / gamma_ref that memory makes it measurably non-Newtonian. Measured
+/// (docs/resolved-coupling.md, "The lattice fluid's memory"): a Ca = 1 cell released at y/H = 0.35 in the shear case
+/// (TRT, 2-point kernel, ibm_reaction) moves toward the wall by 0.081 H in 30 ms at Wi 0.053 (tau 16.5), 0.019 at
+/// 0.013 (tau 8.5), 0.005 at 0.0033 (tau 4.5): in proportion to Wi, while the centre is stable in Stokes flow. At 0.005
+/// (tau 5.40, 3.3x the steps of 0.04) it moves 0.006 H (measured), and the centreline's growth rate scales to ~1.8 / s
+/// (18.6 / s measured at 0.053). A smaller cap costs steps as 1 / sqrt(Wi).
+constexpr double kMaxLatticeWeissenbergDefault = 0.005;
 
 /// Half the thickness of the Evans-Fung biconcave disc at its thickest (2.6 um; resolved-methods.md 8.6).
 constexpr double kCellHalfThickness_m = 1.3e-6;
@@ -36,6 +45,7 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
   c.dx_m = n.positive("dx_m");
   c.lattice_velocity = n.number_in_or("lattice_velocity", 1e-4, kLatticeVelocityMax, kLatticeVelocityDefault);
   c.max_tau = n.number_in_or("max_tau", 0.51, 1000.0, kMaxTauDefault);
+  c.max_lattice_weissenberg = n.number_in_or("max_lattice_weissenberg", 1e-4, 10.0, kMaxLatticeWeissenbergDefault);
   c.collision.model = n.one_of_or("collision", {"trt", "bgk"}, "trt") == "trt" ? CollisionModel::trt : CollisionModel::bgk;
   c.collision.magic = n.greater_than_or("trt_magic", 0.0, trt_magic_default);
   c.wall = n.one_of_or("wall", {"bouzidi", "half_way"}, "bouzidi") == "bouzidi" ? WallRule::bouzidi : WallRule::half_way;
@@ -67,14 +77,37 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
   return c;
 }
 
+namespace {
+
+/// The largest tau the case allows: max_tau, and with a reference shear rate also the Weissenberg bound. With
+/// dt = (tau - 1/2) dx^2 / (3 nu), Wi = gamma (tau - 1/2)^2 dx^2 / (3 nu), so Wi <= Wi_max is tau - 1/2 <=
+/// sqrt(3 nu Wi_max / (gamma dx^2)).
+double tau_cap(const CellNumerics& n, double kinematic_viscosity_m2_s, double reference_shear_rate_1_s) {
+  if (reference_shear_rate_1_s <= 0.0) return n.max_tau;
+  const double wi_tau = 0.5 + std::sqrt(3.0 * kinematic_viscosity_m2_s * n.max_lattice_weissenberg /
+                                        (reference_shear_rate_1_s * n.dx_m * n.dx_m));
+  return std::min(n.max_tau, wi_tau);
+}
+
+}  // namespace
+
 void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, double reference_velocity_m_s,
-                          hs::common::ConfigSection numerics) {
+                          hs::common::ConfigSection numerics, double reference_shear_rate_1_s) {
+  if (reference_shear_rate_1_s <= 0.0 && numerics.has("max_lattice_weissenberg")) {
+    numerics.fail("max_lattice_weissenberg", "applies to the plate cases (shear, migration) only, whose shear rate "
+                                             "is the reference: remove it");
+  }
   n.dt_s = n.lattice_velocity * n.dx_m / reference_velocity_m_s;
   n.collision.tau = 0.5 + 3.0 * kinematic_viscosity_m2_s * n.dt_s / (n.dx_m * n.dx_m);
-  if (n.collision.tau > n.max_tau) {   // slow flow: a smaller lattice velocity (more steps) keeps tau at max_tau
-    n.collision.tau = n.max_tau;
-    n.dt_s = (n.max_tau - 0.5) * n.dx_m * n.dx_m / (3.0 * kinematic_viscosity_m2_s);
+  const double cap = tau_cap(n, kinematic_viscosity_m2_s, reference_shear_rate_1_s);
+  if (n.collision.tau > cap) {   // slow flow: a smaller lattice velocity (more steps) keeps tau at the cap
+    n.collision.tau = cap;
+    n.dt_s = (cap - 0.5) * n.dx_m * n.dx_m / (3.0 * kinematic_viscosity_m2_s);
     n.lattice_velocity = reference_velocity_m_s * n.dt_s / n.dx_m;
+  }
+  if (reference_shear_rate_1_s > 0.0) {
+    n.lattice_weissenberg = reference_shear_rate_1_s * (n.collision.tau - 0.5) * n.dt_s;
+    numerics.derived("lattice_weissenberg", n.lattice_weissenberg);
   }
   const double nu_lu = (n.collision.tau - 0.5) / 3.0;
   if (n.membrane_mass_factor == 0.0) {
@@ -82,7 +115,7 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
   }
   numerics.derived("time_step_s", n.dt_s);
   numerics.derived("tau", n.collision.tau);
-  numerics.derived("lattice_velocity", n.lattice_velocity);          // lowered if tau hit max_tau
+  numerics.derived("lattice_velocity", n.lattice_velocity);          // lowered if tau hit its cap
   numerics.derived("membrane_mass_factor", n.membrane_mass_factor);  // 0 in the input means 1.25 nu_lu k
 }
 

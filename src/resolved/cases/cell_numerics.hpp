@@ -16,6 +16,7 @@ struct CellNumerics {
   double dx_m = 0.0;
   double lattice_velocity = 0.0;      // reference velocity in lattice units: fixes dt (and so tau); lowered if tau > max_tau
   double max_tau = 0.0;
+  double max_lattice_weissenberg = 0.0;   // bound on gamma_ref (tau - 1/2) dt (plate cases; see the .cpp)
   CollisionParams collision;          // tau derived
   WallRule wall = WallRule::bouzidi;
   int membrane_every = 2;
@@ -26,6 +27,8 @@ struct CellNumerics {
   MembraneForce membrane_force = MembraneForce::fluid_stress;   // sampled stress, or minus the IBM force (coupled_cell.hpp)
   Streaming streaming = Streaming::two_buffer;   // lattice storage: two buffers, or the in-place AA pattern (same results)
   double dt_s = 0.0;                  // derived
+  double lattice_weissenberg = 0.0;   // derived: gamma_ref (tau - 1/2) dt, the lattice fluid's memory against the flow's
+                                      // time (0 where the case gives no reference shear rate)
 };
 
 /// Reads [numerics] strictly (dx_m required, the rest with the defaults of the tube-cell campaign). tau and
@@ -33,10 +36,14 @@ struct CellNumerics {
 [[nodiscard]] CellNumerics read_cell_numerics(hs::common::ConfigSection numerics);
 
 /// Derives dt = lattice_velocity dx / u_ref, tau = 1/2 + 3 nu dt / dx^2; if tau > max_tau, dt (and the lattice
-/// velocity) are lowered so tau = max_tau; the membrane mass factor defaults to max(1, 1.25 nu_lu k). Records
-/// time_step_s and tau as derived keys of `numerics`.
+/// velocity) are lowered so tau = max_tau. With a reference shear rate gamma_ref > 0 (the plate cases) tau is also
+/// capped so that the lattice Weissenberg number gamma_ref (tau - 1/2) dt <= max_lattice_weissenberg: the lattice
+/// fluid's stress relaxes over (tau - 1/2) dt, and that memory drove a cell in shear to the wall
+/// (docs/resolved-coupling.md, "The lattice fluid's memory"). The membrane mass factor defaults to
+/// max(1, 1.25 nu_lu k). Records time_step_s, tau (and lattice_weissenberg) as derived keys of `numerics`; without a
+/// reference shear rate, giving max_lattice_weissenberg is a ConfigError.
 void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, double reference_velocity_m_s,
-                          hs::common::ConfigSection numerics);
+                          hs::common::ConfigSection numerics, double reference_shear_rate_1_s = 0.0);
 
 /// A warning for the run's log when the IBM kernel reaches further from a vertex than the RBC's half-thickness: both
 /// faces of the disc then force the same fluid, and past its membrane transient the cell folds into a compact shape

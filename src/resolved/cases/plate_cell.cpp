@@ -120,9 +120,11 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   PlateCellRun& r = *run;
   if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
   ctx.log().info("{}: Re = {:.4g}, shear rate {:.4g} 1/s, U_max {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
-                 "tau = {:.3f}, lattice velocity {:.4g}, membrane mass factor {:.3g}", type, c.reynolds,
+                 "tau = {:.3f}, lattice velocity {:.4g}, lattice Weissenberg {:.3g}, membrane mass factor {:.3g}", type,
+                 c.reynolds,
                  c.shear_rate_1_s, c.u_max_m_s, r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m, c.numerics.dt_s,
-                 c.numerics.collision.tau, c.numerics.lattice_velocity, c.numerics.membrane_mass_factor);
+                 c.numerics.collision.tau, c.numerics.lattice_velocity, c.numerics.lattice_weissenberg,
+                 c.numerics.membrane_mass_factor);
   if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
   PlateCellSeries series(c);
   int frame = 0;
@@ -162,7 +164,9 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   const common::CheckList checks = plate_cell_checks(c, summary["results"], series.samples());
   summary["numerics"] = {{"dx_m", c.numerics.dx_m},
                          {"dt_s", c.numerics.dt_s},
+                         {"membrane_step_s", static_cast<double>(c.numerics.membrane_every) * c.numerics.dt_s},
                          {"tau", c.numerics.collision.tau},
+                         {"lattice_weissenberg", c.numerics.lattice_weissenberg},   // gamma (tau - 1/2) dt
                          {"membrane_mass_factor", c.numerics.membrane_mass_factor},
                          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
                          {"steps", loop.step()},

@@ -97,7 +97,8 @@ PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bo
   read_run(root.section("run"), root.section_or_empty("output"), c);
   read_check(root.section_or_empty("check"), c);
   file.finish();
-  derive_cell_numerics(c.numerics, c.kinematic_viscosity_m2_s, c.u_max_m_s, numerics);
+  // The wall shear rate (simple shear: gamma everywhere; plane Poiseuille: 4 U_max / H) bounds the lattice's memory.
+  derive_cell_numerics(c.numerics, c.kinematic_viscosity_m2_s, c.u_max_m_s, numerics, c.shear_rate_1_s);
   const double dt = c.numerics.dt_s;
   const long k = c.numerics.membrane_every;   // samples and checkpoints fall on membrane-step boundaries
   c.sample_every_steps = std::max(k, k * std::lround(c.sample_every_s / (dt * static_cast<double>(k))));

@@ -98,6 +98,36 @@ TEST(PlateCellConfig, MigrationReynoldsFixesUmaxAndTheSpinUp) {
   EXPECT_EQ(c.spin_up_steps, std::lround(10.0 * c.numerics.collision.tau));
 }
 
+TEST(PlateCellConfig, TheLatticeFluidsMemoryIsShortAgainstTheShearTimeByDefault) {
+  // Regression guard for the drift of the Ca = 1 viscous cell to a wall (docs/resolved-coupling.md, "The lattice
+  // fluid's memory"): at the Mach-based lattice velocity 0.04 this case ran at tau 16.5, Wi = gamma (tau - 1/2) dt =
+  // 0.053, and its cell left the centreline after 0.5 s. Now tau is capped so that Wi = 0.005 (the default):
+  // (tau - 1/2)^2 = 3 nu Wi / (gamma dx^2).
+  const PlateCellConfig c = read(shipped("shear/membrane-viscosity"), PlateFlow::shear);
+  const double gamma = c.shear_rate_1_s;
+  const double tau = 0.5 + std::sqrt(3.0 * 1e-6 * 0.005 / (gamma * 1e-12));
+  EXPECT_NEAR(c.numerics.collision.tau, tau, 1e-12);   // 5.40
+  EXPECT_NEAR(c.numerics.dt_s, (tau - 0.5) * 1e-12 / 3e-6, 1e-20);
+  EXPECT_NEAR(c.numerics.lattice_velocity, c.u_max_m_s * c.numerics.dt_s / 1e-6, 1e-14);   // lowered from 0.04
+  EXPECT_LT(c.numerics.lattice_velocity, 0.04);
+  EXPECT_NEAR(c.numerics.lattice_weissenberg, gamma * (c.numerics.collision.tau - 0.5) * c.numerics.dt_s, 1e-15);
+  EXPECT_NEAR(c.numerics.lattice_weissenberg, 0.005, 1e-12);
+}
+
+TEST(PlateCellConfig, TheWeissenbergBoundIsReadAndOnlyLowersTau) {
+  // The stiff shear case states max_lattice_weissenberg = 0.2 and runs at its Mach-based tau (Wi 0.083): unchanged.
+  const PlateCellConfig stiff = read(shipped("shear"), PlateFlow::shear);
+  EXPECT_NEAR(stiff.numerics.collision.tau, 25.5, 1e-9);
+  EXPECT_NEAR(stiff.numerics.lattice_weissenberg, 400.0 * 25.0 * 0.04e-6 / 4.8e-3, 1e-12);
+  // 0.01 there: tau - 1/2 = sqrt(3 nu 0.01 / (400 dx^2)) = 8.66.
+  const std::string tight = with(shipped("shear"), "max_lattice_weissenberg = 0.2 ", "max_lattice_weissenberg = 0.01 ");
+  const PlateCellConfig c = read(tight, PlateFlow::shear);
+  EXPECT_NEAR(c.numerics.collision.tau, 0.5 + std::sqrt(3.0 * 1e-6 * 0.01 / (400.0 * 1e-12)), 1e-12);
+  EXPECT_NEAR(c.numerics.lattice_weissenberg, 0.01, 1e-12);
+  const std::string bad = with(shipped("shear"), "max_lattice_weissenberg = 0.2 ", "max_lattice_weissenberg = 0.0 ");
+  EXPECT_THROW(read(bad, PlateFlow::shear), common::ConfigError);
+}
+
 TEST(PlateCellConfig, ReleaseTooCloseToAWallIsRefused) {
   // y0 = 0.1 H = 2.4 um < a = 3.91 um: the rim would cross the wall.
   const std::string toml = with(shipped("migration"), "initial_height = 0.3", "initial_height = 0.1");

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "common/errors.hpp"
 #include "resolved/cases/cell_numerics.hpp"
 #include "resolved/cases/tube_cell_config.hpp"
 #include "resolved/cases/tube_cell_series.hpp"
@@ -52,6 +53,25 @@ TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
   EXPECT_NEAR(c.lattice_velocity, 0.01, 1e-12);
   EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 5.0 * 2.0, 1e-9);
   EXPECT_EQ(c.spin_up_steps, 500);   // 4 R^2 / nu = 500 steps > 10 tau = 155
+}
+
+TEST(TubeCellConfig, TheWeissenbergBoundIsRefusedWithoutAReferenceShearRate) {
+  // max_lattice_weissenberg applies to the plate cases (their shear rate is the reference); the tube case refuses it
+  // by name rather than ignoring it.
+  std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/tube-drag/case.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string toml = text.str();
+  const std::string from = "[numerics]\n";
+  toml.replace(toml.find(from), from.size(), from + "max_lattice_weissenberg = 0.005\n");
+  auto file = common::ConfigFile::parse(toml, "tube-drag/case.toml");
+  (void)file->root().section("case").string("type");   // read by the case dispatcher in the app
+  try {
+    (void)read_tube_cell(*file, false);
+    FAIL() << "expected a ConfigError";
+  } catch (const common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("max_lattice_weissenberg"), std::string::npos) << e.what();
+  }
 }
 
 TEST(TubeCellSeries, CdUsesTheRelativeSpeedAndClTheUndisturbedSpeed) {
