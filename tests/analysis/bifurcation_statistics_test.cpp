@@ -134,6 +134,9 @@ TEST(SteadyState, RampNeverSettles) {
   EXPECT_FALSE(halves_agree(x, 0, 3.0, 5, 0.01).agree);   // a 1% floor does not hide a 50% drift
   EXPECT_TRUE(halves_agree(std::vector<double>(100, 2.0), 0).agree);   // constant: no error, no difference
   EXPECT_FALSE(mser_truncation({1.0, 2.0, 3.0}).found);                // too short to judge
+  const auto flat = mser_truncation(std::vector<double>(1000, 0.3));  // settled from the start
+  EXPECT_TRUE(flat.found);
+  EXPECT_EQ(flat.start, 0u);
 }
 
 }  // namespace
