@@ -64,6 +64,35 @@ const std::vector<std::string>& table_columns() {
   return cols;
 }
 
+/// Runs (or keeps) one case folder and returns its table row with the statistics; adds its checks.
+nlohmann::json run_and_measure(const fs::path& cases, const fs::path& out, const std::string& name, double angle, bool quick,
+                               hs::common::CheckList& checks) {
+  const fs::path run_dir = out / name;
+  fmt::print("study bifurcation: {}: {}\n", name, run_angle(cases / name, run_dir, quick));
+  std::fflush(stdout);
+  const nlohmann::json summary = read_json(run_dir / "summary.json");
+  const CsvTable series = read_csv_table(run_dir / "timeseries.csv");
+  const nlohmann::json stats = bifurcation_statistics(summary["results"]["study_layout"], series.columns, series.rows);
+  checks.expect(name + ": the run's own checks (open-geometry)", summary["passed"].get<bool>(),
+                fmt::format("{} failed, {} skipped", summary["checks_failed"].get<int>(), summary["checks_skipped"].get<int>()));
+  check_bifurcation_study(stats, quick, name + ": ", checks);
+  if (stats.contains("too_short")) return {};
+  nlohmann::json row = bifurcation_table_row(angle, summary, stats);
+  row["statistics"] = stats;
+  row["run_folder"] = fs::absolute(run_dir).string();
+  row["paraview"] = {(fs::absolute(run_dir) / "particles.pvd").string(), (fs::absolute(run_dir) / "fields.pvd").string()};
+  return row;
+}
+
+/// The mesh check: angle-90 against angle-90-coarse (dx 3 vs 3.75 um): both values and their difference.
+nlohmann::json mesh_check(const nlohmann::json& fine, const nlohmann::json& coarse) {
+  nlohmann::json j{{"fine_dx_m", 3e-6}, {"coarse_dx_m", 3.75e-6}};
+  for (const char* k : {"s_h_daughter", "s_h_outlet", "di_av", "rbc_flux_fraction_daughter", "blood_flux_fraction_daughter"}) {
+    j[k] = {{"fine", fine[k]}, {"coarse", coarse[k]}, {"coarse_minus_fine", coarse[k].get<double>() - fine[k].get<double>()}};
+  }
+  return j;
+}
+
 void draw_figures(const fs::path& json, const fs::path& dir) {
   const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}'", (fs::path(HS_SOURCE_DIR) / "tools/plot_bifurcation.py").string(),
                                       json.string(), dir.string());
@@ -100,24 +129,20 @@ int study_bifurcation(const hs::common::StudyOptions& options) {
   hs::common::CsvWriter csv(out / "bifurcation_table.csv", table_columns());
   for (const double a : kAngles) {
     const std::string name = fmt::format("angle-{:.0f}", a);
-    const fs::path run_dir = out / name;
-    fmt::print("study bifurcation: {}: {}\n", name, run_angle(cases / name, run_dir, options.quick));
-    std::fflush(stdout);
-    const nlohmann::json summary = read_json(run_dir / "summary.json");
-    const CsvTable series = read_csv_table(run_dir / "timeseries.csv");
-    const nlohmann::json stats = bifurcation_statistics(summary["results"]["study_layout"], series.columns, series.rows);
-    checks.expect(name + ": the run's own checks (open-geometry)", summary["passed"].get<bool>(),
-                  fmt::format("{} failed, {} skipped", summary["checks_failed"].get<int>(), summary["checks_skipped"].get<int>()));
-    check_bifurcation_study(stats, options.quick, name + ": ", checks);
-    if (stats.contains("too_short")) continue;
-    nlohmann::json row = bifurcation_table_row(a, summary, stats);
+    nlohmann::json row = run_and_measure(cases, out, name, a, options.quick, checks);
+    if (row.is_null()) continue;
     std::vector<double> values;
     for (const auto& c : table_columns()) values.push_back(row[c].get<double>());
     csv.row(values);
-    row["statistics"] = stats;
-    row["run_folder"] = fs::absolute(run_dir).string();
-    row["paraview"] = {(fs::absolute(run_dir) / "particles.pvd").string(), (fs::absolute(run_dir) / "fields.pvd").string()};
     table[fmt::format("angle_{:.0f}", a)] = row;
+  }
+  // The mesh check (not --quick): the 90 deg device again at dx = 3.75 um.
+  if (!options.quick && fs::exists(cases / "angle-90-coarse") && table.contains("angle_90")) {
+    const nlohmann::json coarse = run_and_measure(cases, out, "angle-90-coarse", 90.0, false, checks);
+    if (!coarse.is_null()) {
+      table["angle_90_coarse"] = coarse;
+      table["mesh_check_90"] = mesh_check(table["angle_90"], coarse);
+    }
   }
   checks.write_to(table);
   table["provenance"] = hs::common::provenance();

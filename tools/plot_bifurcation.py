@@ -46,15 +46,20 @@ def last_particles(run_folder):
     return pts[0::3], pts[1::3], array("deformation_index")
 
 
-def fig15(rows, out):
+def fig15(rows, out, coarse=None):
     fig, ax = plt.subplots(1, 2, figsize=(9, 3.6))
     a = [r[0] for r in rows]
-    ax[0].errorbar(a, [r[1]["di_av"] for r in rows], yerr=[r[1]["di_av_se"] for r in rows], fmt="o-", capsize=3)
+    ax[0].errorbar(a, [r[1]["di_av"] for r in rows], yerr=[r[1]["di_av_se"] for r in rows], fmt="o-", capsize=3, label="dx 3 um")
+    if coarse:   # the mesh check at 90 deg
+        ax[0].errorbar([90], [coarse["di_av"]], yerr=[coarse["di_av_se"]], fmt="kx", capsize=3, label="dx 3.75 um")
+        for branch in ("daughter", "outlet"):
+            ax[1].errorbar([90], [coarse[f"s_h_{branch}"]], yerr=[coarse[f"s_h_{branch}_se"]], fmt="kx", capsize=3)
+        ax[0].legend()
     ax[0].set_xlabel("bifurcation angle alpha (deg)")
     ax[0].set_ylabel("DI_av (all cells, steady window)")
     for branch, style in (("daughter", "o-"), ("outlet", "s--")):
         ax[1].errorbar(a, [r[1][f"s_h_{branch}"] for r in rows], yerr=[r[1][f"s_h_{branch}_se"] for r in rows], fmt=style,
-                       capsize=3, label=branch)
+                       capsize=3, label=branch + (" (x: dx 3.75 um)" if coarse and branch == "outlet" else ""))
     ax[1].set_xlabel("bifurcation angle alpha (deg)")
     ax[1].set_ylabel("hematocrit skewness S_H at the cut")
     ax[1].legend()
@@ -114,11 +119,12 @@ def main():
     p.add_argument("table", help="bifurcation_table.json of `hemoscale study bifurcation`")
     p.add_argument("out_dir", help="folder for the three PNGs")
     args = p.parse_args()
-    rows = angles(json.load(open(args.table)))
+    table = json.load(open(args.table))
+    rows = angles(table)
     if not rows:
         raise SystemExit(f"{args.table}: no angle_* entries")
     os.makedirs(args.out_dir, exist_ok=True)
-    fig15(rows, args.out_dir)
+    fig15(rows, args.out_dir, table.get("angle_90_coarse"))
     fig16(rows, args.out_dir)
     profiles(rows, args.out_dir)
 
