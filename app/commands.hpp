@@ -16,5 +16,6 @@ void add_bench_command(CLI::App& cli, Action& action);
 void add_validate_command(CLI::App& cli, Action& action);
 void add_campaign_command(CLI::App& cli, Action& action);
 void add_fit_command(CLI::App& cli, Action& action);
+void add_study_command(CLI::App& cli, Action& action);
 
 }  // namespace hs::app

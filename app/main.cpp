@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   hs::app::add_validate_command(cli, action);
   hs::app::add_campaign_command(cli, action);
   hs::app::add_fit_command(cli, action);
+  hs::app::add_study_command(cli, action);
 
   int code = 0;
   try {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The three explicit lists the CLI dispatches on (STYLE R5): case types, benchmarks, validations.
+// The explicit lists the CLI dispatches on (STYLE R5): case types, benchmarks, validations, studies.
 #pragma once
 
 #include <map>
@@ -17,6 +17,10 @@ struct TaskEntry {
   std::string help;
   hs::common::TaskRunner run;
 };
+struct StudyEntry {
+  std::string help;
+  hs::common::StudyRunner run;
+};
 
 /// case.toml [case] type -> runner. One line per case type, in app/register_cases.cpp.
 std::map<std::string, Entry> case_types();
@@ -24,5 +28,7 @@ std::map<std::string, Entry> case_types();
 std::map<std::string, TaskEntry> benchmarks();
 /// `hemoscale validate NAME` -> validation, in validate/register_validations.cpp.
 std::map<std::string, TaskEntry> validations();
+/// `hemoscale study NAME` -> study (several runs, one table), in study/register_studies.cpp.
+std::map<std::string, StudyEntry> studies();
 
 }  // namespace hs::app

@@ -35,4 +35,11 @@ struct TaskOptions {
 };
 using TaskRunner = std::function<int(const TaskOptions&)>;
 
+/// Options of `hemoscale study NAME`: a set of runs of committed case folders, then their table and figures.
+struct StudyOptions {
+  std::optional<std::filesystem::path> output_dir;   // --output DIR; default: the study's runs/ folder in the source tree
+  bool quick = false;                                // --quick: every run --quick, no steady checks, no figures (CI)
+};
+using StudyRunner = std::function<int(const StudyOptions&)>;
+
 }  // namespace hs::common

@@ -30,6 +30,7 @@ class Bifurcation final : public Shape {
   [[nodiscard]] Box3 bounds() const override;
   /// Unit direction of daughter i (0 or 1), pointing away from the junction.
   [[nodiscard]] Vec3 daughter_direction(int i) const { return directions_[static_cast<std::size_t>(i) + 1]; }
+  [[nodiscard]] const BifurcationSpec& spec() const { return spec_; }
 
  private:
   BifurcationSpec spec_;

@@ -11,6 +11,7 @@
 #include "common/geometry/openings_from_config.hpp"
 #include "common/geometry/shape_from_config.hpp"
 #include "common/run_context.hpp"
+#include "unresolved/cases/bifurcation_study_measurement.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
 #include "unresolved/cases/grid_budget.hpp"
 #include "unresolved/cases/loop_numerics.hpp"
@@ -70,6 +71,12 @@ void require_pressure_outlet(hs::common::ConfigSection openings, const std::vect
   openings.section(last_outlet).fail("flow_fraction", why);
 }
 
+/// The case's measurement; with [study] the bifurcation study's on top of it (bifurcation_study_measurement.hpp).
+std::unique_ptr<CfdDemMeasurement> make_measurement(const OpenGeometryConfig& c) {
+  if (c.study) return std::make_unique<BifurcationStudyMeasurement>(c, *c.study);
+  return std::make_unique<OpenGeometryMeasurement>(c);
+}
+
 }  // namespace
 
 long OpenGeometryConfig::steps() const { return std::max(1L, std::lround(end_time_s / dt_s)); }
@@ -112,6 +119,7 @@ OpenGeometryConfig parse_open_geometry(hs::common::ConfigFile& file, bool quick)
   c.quick = quick;
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
   c.vtk_every_s = root.section_or_empty("output").positive_or("vtk_every_s", 0.0);   // 0 (absent): final frame only
+  c.study = parse_bifurcation_study(root, *c.shape);
   file.finish();
   return c;
 }
@@ -134,8 +142,8 @@ CfdDemSetup open_geometry_setup(const OpenGeometryConfig& c) {
 nlohmann::json simulate_open_geometry(const OpenGeometryConfig& c, const std::function<void(const std::vector<double>&)>& on_row,
                                       const CfdDemRestart& restart) {
   CfdDemSolvers run(open_geometry_setup(c));
-  OpenGeometryMeasurement m(c);
-  return run_cfd_dem(run, m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .restart = restart,
+  const auto m = make_measurement(c);
+  return run_cfd_dem(run, *m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .restart = restart,
                               .on_row = on_row, .after_step = {}, .progress = nullptr})
       .summary;
 }
@@ -152,9 +160,9 @@ int run_open_geometry(const hs::common::CaseRequest& request) {
   ctx.log().info("open-geometry: {} openings, inflow {:.4g} m^3/s, dx = {:.4g} m, dt = {:.4g} s, n_coupling = {}, {} steps",
                  c.openings.size(), c.inflow_m3_s(), c.dx_m, c.dt_s, c.n_coupling, c.steps());
   CfdDemSolvers run(open_geometry_setup(c));
-  OpenGeometryMeasurement m(c);
+  const auto m = make_measurement(c);
   const CfdDemOutcome out = run_cfd_dem_in_folder(
-      ctx, run, m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .vtk_every_s = c.vtk_every_s});
+      ctx, run, *m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .vtk_every_s = c.vtk_every_s});
   hs::common::CheckList checks;
   const nlohmann::json& res = out.summary["results"];
   check_open_geometry(c, res, checks);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "common/config/config_file.hpp"
 #include "common/geometry/opening_condition.hpp"
 #include "common/geometry/shape.hpp"
+#include "unresolved/cases/bifurcation_study.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/coupling_model.hpp"
 #include "unresolved/dem/particle_params.hpp"
@@ -39,6 +41,7 @@ struct OpenGeometryConfig {
   double checkpoint_every_wall_s = 600.0;
   double vtk_every_s = 0.0;
   bool quick = false;
+  std::optional<BifurcationStudySpec> study;             // [study]: the bifurcation study's measurement on top
 
   [[nodiscard]] long steps() const;
   /// Summed flow rate of the inlets (plasma, as the conditions prescribe it), m^3/s.

@@ -127,6 +127,9 @@ class CfdDemCoupling {
   /// (to round-off: the DEM re-sorts its particles at the restart, see dem_checkpoint.hpp).
   void read_state(const hs::common::Checkpoint& cp);
 
+  /// The closures, for their usage counters (evaluations, how many had an input outside the validity box).
+  [[nodiscard]] const CouplingClosures& closures() const { return closures_; }
+
  private:
   void particle_forces();
   void fill_fields();
