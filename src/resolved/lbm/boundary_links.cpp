@@ -28,6 +28,15 @@ WallLink make_wall_link(const LinkSpec& s) {
     l.d = d / (2.0 * q);
     l.e = (1.0 - 2.0 * q + exactness) / (2.0 * q);
   }
+  if (s.lambda_closure != s.lambda) {
+    // Lambda shift (see the header); the closure equation is scaled by 2q for q >= 1/2.
+    const double scale = q < 0.5 ? 1.0 : 1.0 / (2.0 * q);
+    const double shift = s.lambda - s.lambda_closure;
+    const common::Vec3& f = s.body_force_lu;
+    const double cf = c[0] * f.x + c[1] * f.y + c[2] * f.z;
+    l.e += scale * (-2.0 * shift / (3.0 * s.lambda_plus));
+    l.d += scale * (-6.0 * D3Q19::w[static_cast<std::size_t>(s.dir)] * shift * cf / (s.rho_wall_lu * s.lambda_plus));
+  }
   return l;
 }
 
