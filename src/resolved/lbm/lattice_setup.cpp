@@ -106,8 +106,7 @@ void FluidLattice::build_wall_links() {
                                                    .interpolated = interpolated, .wall_velocity_lu = u_wall,
                                                    .rho_wall_lu = spec_.rho0_lu, .lambda_plus = lambda_plus,
                                                    .lambda = lambda,
-                                                   .lambda_closure = shifted ? spec_.collision.closure_lambda() : lambda,
-                                                   .body_force_lu = body_force_}));
+                                                   .lambda_closure = shifted ? spec_.collision.closure_lambda() : lambda}));
         }
       }
     }
