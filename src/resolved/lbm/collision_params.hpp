@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string_view>
 
 namespace hs::resolved {
 
@@ -10,6 +11,15 @@ namespace hs::resolved {
 /// by odd_rate_max (regularized_guo_collision.hpp), with wall closures that keep TRT's wall location at Lambda = magic
 /// (make_wall_link): for tau up to ~60.
 enum class CollisionModel { bgk, trt, regularized };
+
+/// The case-file names of the models (`[numerics] collision`).
+inline constexpr std::string_view collision_model_name(CollisionModel m) {
+  return m == CollisionModel::bgk ? "bgk" : (m == CollisionModel::trt ? "trt" : "regularized");
+}
+/// pre: `name` is one of the names collision_model_name gives (the case readers check it with one_of).
+inline constexpr CollisionModel collision_model_from_name(std::string_view name) {
+  return name == "bgk" ? CollisionModel::bgk : (name == "trt" ? CollisionModel::trt : CollisionModel::regularized);
+}
 
 /// TRT magic parameter Lambda = (tau+ - 1/2)(tau- - 1/2) = 3/16 puts the half-way bounce-back wall exactly
 /// half way between nodes for Poiseuille flow, independently of tau (Ginzburg, Verhaeghe & d'Humieres 2008,
