@@ -162,7 +162,7 @@ void FluidLattice::stream_collide() {
                                    .force_stride = layout_.volume(),
                                    .omega_plus = spec_.collision.omega_plus(),
                                    .omega_minus = spec_.collision.omega_minus(),
-                                   .regularized = spec_.collision.model == CollisionModel::regularized,
+                                   .regularized = spec_.collision.regularizes(),
                                    .streaming_stores = streaming_stores(),
                                              .threaded = fluid_nodes_ >= kMinNodesForThreads});
   std::swap(src_, dst_);
@@ -205,7 +205,7 @@ void FluidLattice::aa_stream_collide() {
                           .force_stride = layout_.volume(),
                           .omega_plus = spec_.collision.omega_plus(),
                           .omega_minus = spec_.collision.omega_minus(),
-                          .regularized = spec_.collision.model == CollisionModel::regularized,
+                          .regularized = spec_.collision.regularizes(),
                           .threaded = fluid_nodes_ >= kMinNodesForThreads,
                           .wrap_x = aa_wrap_x(),
                           .stride_y = layout_.stride_y(),
