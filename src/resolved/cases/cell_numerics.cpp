@@ -46,7 +46,7 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
   c.lattice_velocity = n.number_in_or("lattice_velocity", 1e-4, kLatticeVelocityMax, kLatticeVelocityDefault);
   c.max_tau = n.number_in_or("max_tau", 0.51, 1000.0, kMaxTauDefault);
   c.max_lattice_weissenberg = n.number_in_or("max_lattice_weissenberg", 1e-4, 10.0, kMaxLatticeWeissenbergDefault);
-  c.collision.model = n.one_of_or("collision", {"trt", "bgk"}, "trt") == "trt" ? CollisionModel::trt : CollisionModel::bgk;
+  c.collision.model = collision_model_from_name(n.one_of_or("collision", {"trt", "bgk", "regularized"}, "trt"));
   c.collision.magic = n.greater_than_or("trt_magic", 0.0, trt_magic_default);
   c.wall = n.one_of_or("wall", {"bouzidi", "half_way"}, "bouzidi") == "bouzidi" ? WallRule::bouzidi : WallRule::half_way;
   c.membrane_every = static_cast<int>(n.integer_in_or("membrane_every", 1, 100, 2));   // Palabos timestep_ShapeOp

@@ -150,7 +150,7 @@ int report(const TubePoiseuilleConfig& c, const common::UnitConverter& units, co
                   {"flow_rate_rel_error", err_q}};
   s["groups"] = {{"reynolds", c.reynolds}, {"lattice_mach", c.lattice_mach}};
   s["numerics"] = {{"tau", c.collision.tau},
-                   {"collision", c.collision.model == CollisionModel::trt ? "trt" : "bgk"},
+                   {"collision", std::string(collision_model_name(c.collision.model))},
                    {"dx_m", c.dx_m},
                    {"dt_s", c.dt_s},
                    {"radius_lattice_spacings", c.radius_m / c.dx_m},

@@ -24,8 +24,7 @@ void read_numerics(hs::common::ConfigSection n, TubePoiseuilleConfig& c, bool qu
   c.dx_m = n.positive("dx_m") * (quick ? kQuickCoarsening : 1.0);
   n.derived("dx_m_used", c.dx_m);   // differs from dx_m with --quick
   c.collision.tau = n.greater_than("tau", 0.5);
-  const std::string model = n.one_of_or("collision", {"trt", "bgk"}, "trt");
-  c.collision.model = model == "trt" ? CollisionModel::trt : CollisionModel::bgk;
+  c.collision.model = collision_model_from_name(n.one_of_or("collision", {"trt", "bgk", "regularized"}, "trt"));
   c.collision.magic = n.greater_than_or("trt_magic", 0.0, trt_magic_default);
   c.wall = n.one_of_or("wall", {"bouzidi", "half_way"}, "bouzidi") == "bouzidi" ? WallRule::bouzidi
                                                                                  : WallRule::half_way;

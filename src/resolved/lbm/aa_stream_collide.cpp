@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "resolved/lbm/regularized_guo_collision.hpp"
 #include "resolved/lbm/trt_guo_collision.hpp"
 
 namespace hs::resolved {
@@ -31,10 +32,9 @@ constexpr std::size_t slot_of(int i) {
 /// slot[slot_of<kStep, false>(i)][n]. The SIMD pragma is valid because node n's slots are disjoint from every other
 /// node's (see the header), and each store depends on all 19 loads of its own node. kOddParts: also keep the node's
 /// pre-collision odd parts at entry odd_base + n (see AaStreamCollideArgs::odd_parts).
-template <AaStep kStep, bool kForceField, bool kOddParts>
-void aa_update_nodes(const AaStreamCollideArgs& a, const Slots& slot, std::ptrdiff_t begin, std::ptrdiff_t end,
-                     std::ptrdiff_t odd_base) {
-  const TrtRates rates = trt_rates(a.omega_plus, a.omega_minus);
+template <AaStep kStep, bool kForceField, bool kOddParts, bool kRegularized>
+void aa_update_nodes(const AaStreamCollideArgs& a, const TrtRates& rates, const Slots& slot, std::ptrdiff_t begin,
+                     std::ptrdiff_t end, std::ptrdiff_t odd_base) {
   const std::ptrdiff_t vol = static_cast<std::ptrdiff_t>(a.force_stride);
   const auto odd_stride = static_cast<std::ptrdiff_t>(a.odd_stride);
   const auto update = [&](std::ptrdiff_t n) __attribute__((always_inline)) {
@@ -54,7 +54,11 @@ void aa_update_nodes(const AaStreamCollideArgs& a, const Slots& slot, std::ptrdi
       fz += a.force_field[2 * vol + n];
     }
     double post[C::q];
-    trt_guo_collide(f, fx, fy, fz, rates, post);
+    if constexpr (kRegularized) {
+      regularized_guo_collide(f, fx, fy, fz, rates, post);
+    } else {
+      trt_guo_collide(f, fx, fy, fz, rates, post);
+    }
 #pragma GCC unroll 19
     for (int i = 0; i < C::q; ++i) slot[slot_of<kStep, false>(i)][n] = post[i];
   };
@@ -80,8 +84,9 @@ Slots edge_slots(const Slots& slot, std::ptrdiff_t nx, bool low, bool high) {
   return t;
 }
 
-template <AaStep kStep, bool kForceField, bool kOddParts>
-void aa_update_run(const AaStreamCollideArgs& a, const Slots& slot, const std::array<Slots, 3>& edges, FluidRun run) {
+template <AaStep kStep, bool kForceField, bool kOddParts, bool kRegularized>
+void aa_update_run(const AaStreamCollideArgs& a, const TrtRates& rates, const Slots& slot,
+                   const std::array<Slots, 3>& edges, FluidRun run) {
   std::ptrdiff_t begin = run.begin;
   std::ptrdiff_t end = run.begin + run.length;
   const std::ptrdiff_t odd_base = run.odd_parts - run.begin;
@@ -91,19 +96,43 @@ void aa_update_run(const AaStreamCollideArgs& a, const Slots& slot, const std::a
     const bool low = x0 == 0;
     const bool high = x0 + run.length == a.wrap_x;
     if (low && high && run.length == 1) {
-      aa_update_nodes<kStep, kForceField, kOddParts>(a, edges[2], begin, begin + 1, odd_base);
+      aa_update_nodes<kStep, kForceField, kOddParts, kRegularized>(a, rates, edges[2], begin, begin + 1, odd_base);
       return;
     }
     if (low) {
-      aa_update_nodes<kStep, kForceField, kOddParts>(a, edges[0], begin, begin + 1, odd_base);
+      aa_update_nodes<kStep, kForceField, kOddParts, kRegularized>(a, rates, edges[0], begin, begin + 1, odd_base);
       ++begin;
     }
     if (high) {
-      aa_update_nodes<kStep, kForceField, kOddParts>(a, edges[1], end - 1, end, odd_base);
+      aa_update_nodes<kStep, kForceField, kOddParts, kRegularized>(a, rates, edges[1], end - 1, end, odd_base);
       --end;
     }
   }
-  aa_update_nodes<kStep, kForceField, kOddParts>(a, slot, begin, end, odd_base);
+  aa_update_nodes<kStep, kForceField, kOddParts, kRegularized>(a, rates, slot, begin, end, odd_base);
+}
+
+struct RunKind {
+  bool force_field;
+  bool odd_parts;
+  bool regularized;
+};
+
+/// The run's kernel instance for its kind.
+template <AaStep kStep>
+void aa_dispatch_run(const AaStreamCollideArgs& a, const TrtRates& rates, const Slots& slot,
+                     const std::array<Slots, 3>& edges, FluidRun run, RunKind kind) {
+  const auto with = [&]<bool kField, bool kOdd>() {
+    if (kind.regularized) {
+      aa_update_run<kStep, kField, kOdd, true>(a, rates, slot, edges, run);
+    } else {
+      aa_update_run<kStep, kField, kOdd, false>(a, rates, slot, edges, run);
+    }
+  };
+  if (kind.force_field) {
+    kind.odd_parts ? with.template operator()<true, true>() : with.template operator()<true, false>();
+  } else {
+    kind.odd_parts ? with.template operator()<false, true>() : with.template operator()<false, false>();
+  }
 }
 
 struct LayerRange {
@@ -150,21 +179,13 @@ void aa_update_runs(const AaStreamCollideArgs& a) {
   const std::array<Slots, 3> edges{edge_slots(slot, nx, true, false), edge_slots(slot, nx, false, true),
                                    edge_slots(slot, nx, true, true)};
   const bool has_field = a.force_field != nullptr;
+  const TrtRates rates = trt_rates(a.omega_plus, a.omega_minus);
   const auto update = [&](std::size_t r) {
     if (r + kPrefetchRuns < a.runs.size()) prefetch_run_start(a, slot, a.runs[r + kPrefetchRuns].begin);
     const FluidRun& run = a.runs[r];
     const bool odd_parts = run.odd_parts >= 0 && a.odd_parts != nullptr;
-    if (has_field) {
-      if (odd_parts) {
-        aa_update_run<kStep, true, true>(a, slot, edges, run);
-      } else {
-        aa_update_run<kStep, true, false>(a, slot, edges, run);
-      }
-    } else if (odd_parts) {
-      aa_update_run<kStep, false, true>(a, slot, edges, run);
-    } else {
-      aa_update_run<kStep, false, false>(a, slot, edges, run);
-    }
+    aa_dispatch_run<kStep>(a, rates, slot, edges, run,
+                           RunKind{.force_field = has_field, .odd_parts = odd_parts, .regularized = a.regularized});
   };
   if (a.layer_runs == nullptr || a.layer_runs->empty()) {
     const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());

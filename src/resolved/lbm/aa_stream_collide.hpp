@@ -39,7 +39,8 @@ struct AaStreamCollideArgs {
   const double* force_field;                     // per-node force density (3 comps, stride force_stride) or nullptr
   std::size_t force_stride;                      // component stride of force_field
   double omega_plus;                             // 1/tau+
-  double omega_minus;                            // 1/tau- (= omega_plus for BGK)
+  double omega_minus;                            // 1/tau- (= omega_plus for BGK; unused when regularized)
+  bool regularized;                              // regularised collision (regularized_guo_collision.hpp)
   bool threaded;                                 // share the runs among OpenMP threads
   /// > 0: x is periodic within this block of wrap_x interior nodes, and the neighbour step wraps its x reads and
   /// writes into the interior instead of using the x ghosts (no x fill or fold needed). 0: no wrapping.

@@ -13,7 +13,7 @@ WallLink make_wall_link(const LinkSpec& s) {
   const double cu = c[0] * uw.x + c[1] * uw.y + c[2] * uw.z;
   const double d = -2.0 * D3Q19::w[static_cast<std::size_t>(s.dir)] * s.rho_wall_lu * cu / D3Q19::cs2;
   WallLink l{.target = s.target, .node = s.node, .second = s.node, .behind = s.second, .dir = s.dir,
-             .a = 1.0, .b = 0.0, .c = 0.0, .d = d, .e = 0.0};
+             .a = 1.0, .b = 0.0, .c = 0.0, .d = d, .e = 0.0, .odd_slot = -1, .force_coef = {}};
   const double q = s.q;
   if (!s.interpolated || (q < 0.5 && !s.second_usable)) return l;
   const double exactness = (q * q - 4.0 * s.lambda / 3.0) / s.lambda_plus;
@@ -28,10 +28,19 @@ WallLink make_wall_link(const LinkSpec& s) {
     l.d = d / (2.0 * q);
     l.e = (1.0 - 2.0 * q + exactness) / (2.0 * q);
   }
+  if (s.lambda_closure != s.lambda) {
+    // Lambda shift (see the header); the closure equation is scaled by 2q for q >= 1/2.
+    const double scale = q < 0.5 ? 1.0 : 1.0 / (2.0 * q);
+    const double shift = s.lambda - s.lambda_closure;
+    l.e += scale * (-2.0 * shift / (3.0 * s.lambda_plus));
+    const double fc = scale * (-6.0 * D3Q19::w[static_cast<std::size_t>(s.dir)] * shift / (s.rho_wall_lu * s.lambda_plus));
+    l.force_coef = fc * common::Vec3{static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
+  }
   return l;
 }
 
-void apply_wall_links(std::span<const WallLink> links, double* src, const double* previous, std::size_t volume) {
+void apply_wall_links(std::span<const WallLink> links, double* src, const double* previous, std::size_t volume,
+                      const common::Vec3* body_force) {
   const auto n = static_cast<std::ptrdiff_t>(links.size());
   const auto vol = static_cast<std::ptrdiff_t>(volume);
   // Each link costs a few memory accesses: only tens of thousands of them are worth a parallel region.
@@ -43,7 +52,9 @@ void apply_wall_links(std::span<const WallLink> links, double* src, const double
     const double post_i = src[i * vol + l.node];
     const double post_o = src[o * vol + l.node];
     const double odd_change = 0.5 * (previous[i * vol + l.behind] - previous[o * vol + l.target]) - 0.5 * (post_i - post_o);
-    src[o * vol + l.target] = l.a * post_i + l.b * src[i * vol + l.second] + l.c * post_o + l.d + l.e * odd_change;
+    double value = l.a * post_i + l.b * src[i * vol + l.second] + l.c * post_o + l.d + l.e * odd_change;
+    if (body_force != nullptr) value += dot(l.force_coef, *body_force);
+    src[o * vol + l.target] = value;
   }
 }
 
@@ -83,12 +94,14 @@ std::vector<AaWallLink> resolve_aa_links(std::span<const WallLink> links, const 
                                   .target = layout.slot(o, l.target),
                                   .a = l.a, .b = l.b, .c = l.c, .d = l.d, .e = l.e,
                                   .odd_slot = l.odd_slot,
+                                  .force_coef = l.force_coef,
                                   .odd_negated = l.dir > D3Q19::half});
   }
   return resolved;
 }
 
-void apply_wall_links_aa(std::span<const AaWallLink> links, double* f, std::span<const double> odd_parts) {
+void apply_wall_links_aa(std::span<const AaWallLink> links, double* f, std::span<const double> odd_parts,
+                         const common::Vec3* body_force) {
   const auto n = static_cast<std::ptrdiff_t>(links.size());
   // As apply_wall_links: only tens of thousands of links are worth a parallel region.
 #pragma omp parallel for schedule(static) if (n >= 65536)
@@ -102,7 +115,9 @@ void apply_wall_links_aa(std::span<const AaWallLink> links, double* f, std::span
       odd_pre = l.odd_negated ? -pair : pair;
     }
     const double odd_change = odd_pre - 0.5 * (post_i - post_o);
-    f[l.target] = l.a * post_i + l.b * f[l.second] + l.c * post_o + l.d + l.e * odd_change;
+    double value = l.a * post_i + l.b * f[l.second] + l.c * post_o + l.d + l.e * odd_change;
+    if (body_force != nullptr) value += dot(l.force_coef, *body_force);
+    f[l.target] = value;
   }
 }
 

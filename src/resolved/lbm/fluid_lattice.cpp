@@ -134,11 +134,12 @@ void FluidLattice::apply_boundaries() {
     // After a step the kernel has applied the fused links already; at initialize() all links are due.
     const std::size_t first = fused_links_done_ ? fused_links_ : 0;
     fused_links_done_ = false;
-    apply_wall_links_aa(std::span<const AaWallLink>(aa_links_[steps_ % 2]).subspan(first), src_.data(), link_odd_parts_);
+    apply_wall_links_aa(std::span<const AaWallLink>(aa_links_[steps_ % 2]).subspan(first), src_.data(), link_odd_parts_,
+                        link_body_force());
     return;
   }
   apply_open_boundaries(open_nodes_, src_.data(), stride_);
-  apply_wall_links(links_, src_.data(), dst_.data(), stride_);
+  apply_wall_links(links_, src_.data(), dst_.data(), stride_, link_body_force());
 }
 
 void FluidLattice::step() {
@@ -161,6 +162,7 @@ void FluidLattice::stream_collide() {
                                    .force_stride = layout_.volume(),
                                    .omega_plus = spec_.collision.omega_plus(),
                                    .omega_minus = spec_.collision.omega_minus(),
+                                   .regularized = spec_.collision.regularizes(),
                                    .streaming_stores = streaming_stores(),
                                              .threaded = fluid_nodes_ >= kMinNodesForThreads});
   std::swap(src_, dst_);
@@ -190,7 +192,7 @@ void FluidLattice::aa_stream_collide() {
   const std::function<void(int, LayerPair)> apply = [&](int z, LayerPair pair) {
     const std::size_t group = 2 * static_cast<std::size_t>(z) + (pair == LayerPair::with_above ? 1 : 0);
     const std::size_t k0 = layer_links_[group];
-    apply_wall_links_aa(links.subspan(k0, layer_links_[group + 1] - k0), src_.data(), link_odd_parts_);
+    apply_wall_links_aa(links.subspan(k0, layer_links_[group + 1] - k0), src_.data(), link_odd_parts_, link_body_force());
   };
   const bool fused = fused_links_ > 0;
   resolved::aa_stream_collide(
@@ -203,6 +205,7 @@ void FluidLattice::aa_stream_collide() {
                           .force_stride = layout_.volume(),
                           .omega_plus = spec_.collision.omega_plus(),
                           .omega_minus = spec_.collision.omega_minus(),
+                          .regularized = spec_.collision.regularizes(),
                           .threaded = fluid_nodes_ >= kMinNodesForThreads,
                           .wrap_x = aa_wrap_x(),
                           .stride_y = layout_.stride_y(),

@@ -157,6 +157,10 @@ class FluidLattice {
 
   [[nodiscard]] bool streaming_stores() const;
   [[nodiscard]] bool aa() const { return spec_.streaming == Streaming::aa; }
+  /// The body force for the wall links' Lambda shift (boundary_links.hpp), nullptr when the closures have none.
+  [[nodiscard]] const common::Vec3* link_body_force() const {
+    return spec_.collision.model == CollisionModel::regularized ? &body_force_ : nullptr;
+  }
   /// AA only: the layout of the buffer now (natural after an odd number of steps).
   [[nodiscard]] AaLayout aa_layout() const;
   [[nodiscard]] std::ptrdiff_t aa_wrap_x() const;

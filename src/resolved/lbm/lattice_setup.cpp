@@ -80,8 +80,12 @@ void FluidLattice::build_wall_links() {
           const bool second_usable = second_flag == kFluid || second_flag == kOpen;
           double q = 0.5;
           common::Vec3 u_wall;
-          const bool interpolated = flag == kShapeSolid && wall_rule_ == WallRule::bouzidi;
-          if (interpolated) {
+          const bool bouzidi = flag == kShapeSolid && wall_rule_ == WallRule::bouzidi;
+          // Half-way walls (q = 1/2) take the interpolated closure too when it differs from plain bounce-back: the
+          // Lambda shift of the regularised collision (boundary_links.hpp).
+          const bool shifted = spec_.collision.model == CollisionModel::regularized;
+          const bool interpolated = bouzidi || shifted;
+          if (bouzidi) {
             const common::Vec3 p = shape_point(g);
             const common::Vec3 step{static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
             q = common::wall_crossing_fraction(*shape_, p, p + placement_.spacing * step);
@@ -96,11 +100,13 @@ void FluidLattice::build_wall_links() {
           }
           const double lambda_plus = 1.0 / spec_.collision.omega_plus() - 0.5;
           const double lambda_minus = 1.0 / spec_.collision.omega_minus() - 0.5;
+          const double lambda = lambda_plus * lambda_minus;
           links_.push_back(make_wall_link(LinkSpec{.node = node, .target = target, .second = second,
                                                    .second_usable = second_usable, .dir = i, .q = q,
                                                    .interpolated = interpolated, .wall_velocity_lu = u_wall,
                                                    .rho_wall_lu = spec_.rho0_lu, .lambda_plus = lambda_plus,
-                                                   .lambda = lambda_plus * lambda_minus}));
+                                                   .lambda = lambda,
+                                                   .lambda_closure = shifted ? spec_.collision.closure_lambda() : lambda}));
         }
       }
     }
@@ -158,7 +164,7 @@ void FluidLattice::build_odd_part_runs() {
       const bool keeps = entry[static_cast<std::size_t>(n)] >= 0;
       const std::ptrdiff_t start = n;
       while (n < end && (entry[static_cast<std::size_t>(n)] >= 0) == keeps) ++n;
-      FluidRun part{.begin = start, .length = n - start};
+      FluidRun part{.begin = start, .length = n - start, .odd_parts = -1};
       if (keeps) {
         part.odd_parts = static_cast<std::ptrdiff_t>(odd_part_nodes_);
         for (std::ptrdiff_t m = start; m < n; ++m) entry[static_cast<std::size_t>(m)] = static_cast<std::ptrdiff_t>(odd_part_nodes_++);

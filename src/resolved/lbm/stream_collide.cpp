@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "resolved/lbm/regularized_guo_collision.hpp"
 #include "resolved/lbm/trt_guo_collision.hpp"
 
 namespace hs::resolved {
@@ -15,11 +16,10 @@ using C = D3Q19;
 
 /// Updates nodes [begin, end), writing direction k of node n to out[k][n - out_shift]. The collision is inlined
 /// straight-line code over the 19 directions, so the loop vectorises along x.
-template <bool kForceField>
-void update_nodes(const StreamCollideArgs& a, const std::array<const double*, C::q>& pull,
+template <bool kForceField, bool kRegularized>
+void update_nodes(const StreamCollideArgs& a, const TrtRates& rates, const std::array<const double*, C::q>& pull,
                   const std::array<double*, C::q>& out, std::ptrdiff_t out_shift, std::ptrdiff_t begin,
                   std::ptrdiff_t end) {
-  const TrtRates rates = trt_rates(a.omega_plus, a.omega_minus);
   const std::ptrdiff_t vol = static_cast<std::ptrdiff_t>(a.force_stride);
 #pragma omp simd
   for (std::ptrdiff_t n = begin; n < end; ++n) {
@@ -35,7 +35,11 @@ void update_nodes(const StreamCollideArgs& a, const std::array<const double*, C:
       fz += a.force_field[2 * vol + n];
     }
     double post[C::q];
-    trt_guo_collide(f, fx, fy, fz, rates, post);
+    if constexpr (kRegularized) {
+      regularized_guo_collide(f, fx, fy, fz, rates, post);
+    } else {
+      trt_guo_collide(f, fx, fy, fz, rates, post);
+    }
 #pragma GCC unroll 19
     for (int i = 0; i < C::q; ++i) out[static_cast<std::size_t>(i)][n - out_shift] = post[i];
   }
@@ -44,27 +48,27 @@ void update_nodes(const StreamCollideArgs& a, const std::array<const double*, C:
 /// Updates one run. With streaming stores, whole cache lines of dst (8 nodes, aligned because the stride is a
 /// multiple of 8 and the arrays are 64-byte aligned) are computed into an L1 buffer and stored non-temporally;
 /// the unaligned head and tail of the run use ordinary stores.
-template <bool kForceField>
-void update_run(const StreamCollideArgs& a, const std::array<const double*, C::q>& pull,
+template <bool kForceField, bool kRegularized>
+void update_run(const StreamCollideArgs& a, const TrtRates& rates, const std::array<const double*, C::q>& pull,
                 const std::array<double*, C::q>& out, std::ptrdiff_t begin, std::ptrdiff_t end) {
 #if defined(__AVX512F__)
   if (a.streaming_stores) {
     constexpr std::ptrdiff_t kLine = 8;
     const std::ptrdiff_t head_end = std::min(end, (begin + kLine - 1) / kLine * kLine);
-    update_nodes<kForceField>(a, pull, out, 0, begin, head_end);
+    update_nodes<kForceField, kRegularized>(a, rates, pull, out, 0, begin, head_end);
     alignas(64) double buf[C::q][kLine];
     std::array<double*, C::q> rows{};
     for (std::size_t k = 0; k < C::q; ++k) rows[k] = buf[k];
     std::ptrdiff_t n = head_end;
     for (; n + kLine <= end; n += kLine) {
-      update_nodes<kForceField>(a, pull, rows, n, n, n + kLine);
+      update_nodes<kForceField, kRegularized>(a, rates, pull, rows, n, n, n + kLine);
       for (std::size_t k = 0; k < C::q; ++k) _mm512_stream_pd(out[k] + n, _mm512_load_pd(buf[k]));
     }
-    update_nodes<kForceField>(a, pull, out, 0, n, end);
+    update_nodes<kForceField, kRegularized>(a, rates, pull, out, 0, n, end);
     return;
   }
 #endif
-  update_nodes<kForceField>(a, pull, out, 0, begin, end);
+  update_nodes<kForceField, kRegularized>(a, rates, pull, out, 0, begin, end);
 }
 
 }  // namespace
@@ -78,15 +82,23 @@ void stream_collide(const StreamCollideArgs& a) {
   }
   const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
   const bool has_field = a.force_field != nullptr;
+  const TrtRates bulk = trt_rates(a.omega_plus, a.omega_minus);
 #pragma omp parallel if (a.threaded)
   {
 #pragma omp for schedule(static)
     for (std::ptrdiff_t r = 0; r < runs; ++r) {
       const FluidRun run = a.runs[static_cast<std::size_t>(r)];
-      if (has_field) {
-        update_run<true>(a, pull, out, run.begin, run.begin + run.length);
+      const std::ptrdiff_t end = run.begin + run.length;
+      if (a.regularized) {
+        if (has_field) {
+          update_run<true, true>(a, bulk, pull, out, run.begin, end);
+        } else {
+          update_run<false, true>(a, bulk, pull, out, run.begin, end);
+        }
+      } else if (has_field) {
+        update_run<true, false>(a, bulk, pull, out, run.begin, end);
       } else {
-        update_run<false>(a, pull, out, run.begin, run.begin + run.length);
+        update_run<false, false>(a, bulk, pull, out, run.begin, end);
       }
     }
 #if defined(__AVX512F__)

@@ -30,7 +30,8 @@ struct StreamCollideArgs {
   const double* force_field;                     // per-node force density (3 comps, stride force_stride) or nullptr
   std::size_t force_stride;                      // component stride of force_field
   double omega_plus;                             // 1/tau+
-  double omega_minus;                            // 1/tau- (= omega_plus for BGK)
+  double omega_minus;                            // 1/tau- (= omega_plus for BGK; unused when regularized)
+  bool regularized;                              // regularised collision (regularized_guo_collision.hpp)
   bool streaming_stores;                         // write dst with non-temporal stores (arrays far beyond cache)
   bool threaded;                                 // share the runs among OpenMP threads
 };

@@ -17,13 +17,14 @@
 namespace hs::resolved {
 namespace {
 
-TubeCellConfig read_drag_case(double reynolds) {
+TubeCellConfig read_drag_case(double reynolds, const std::string& extra_numerics = "") {
   std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/tube-drag/case.toml");
   std::stringstream text;
   text << in.rdbuf();
   std::string toml = text.str();
   const std::string from = "reynolds = 0.5 ";
   toml.replace(toml.find(from), from.size(), "reynolds = " + std::to_string(reynolds) + " ");
+  if (!extra_numerics.empty()) toml.replace(toml.find("[numerics]\n"), 11, "[numerics]\n" + extra_numerics + "\n");
   auto file = common::ConfigFile::parse(toml, "tube-drag/case.toml");
   EXPECT_EQ(file->root().section("case").string("type"), "tube-cell");   // read by the case dispatcher in the app
   return read_tube_cell(*file, false);
@@ -42,6 +43,13 @@ TEST(TubeCellConfig, Re05KeepsTheLatticeVelocityAndScalesTheMembraneMass) {
   EXPECT_NEAR(membrane_relaxation_time_s(c), 2.82e4 * 3.91e-6 * 3.91e-6 / 2.5e-6, 1e-12);
   EXPECT_NEAR(c.max_time_s, 3.0 * 2.82e4 * 3.91e-6 * 3.91e-6 / 2.5e-6 + 6.0 * 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37) / 400.0,
               1e-12);
+}
+
+TEST(TubeCellConfig, CollisionNamesTheOperator) {
+  EXPECT_EQ(read_drag_case(0.5).collision.model, CollisionModel::trt);   // the default
+  EXPECT_EQ(read_drag_case(0.5, "collision = \"regularized\"").collision.model, CollisionModel::regularized);
+  EXPECT_EQ(read_drag_case(0.5, "collision = \"bgk\"").collision.model, CollisionModel::bgk);
+  EXPECT_THROW(read_drag_case(0.5, "collision = \"mrt\""), common::ConfigError);
 }
 
 TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {

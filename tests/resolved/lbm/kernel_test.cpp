@@ -42,7 +42,7 @@ KernelSetup make_setup(bool streaming) {
   s.args = StreamCollideArgs{.src = s.src.data(), .dst = s.dst.data(), .volume = s.stride, .offset = offsets,
                              .runs = s.runs, .body_force = {1e-5, -2e-5, 3e-5}, .force_field = s.force.data(),
                              .force_stride = s.layout.volume(), .omega_plus = 1.0 / 0.8,
-                             .omega_minus = 1.0 / (0.5 + (3.0 / 16.0) / 0.3), .streaming_stores = streaming,
+                             .omega_minus = 1.0 / (0.5 + (3.0 / 16.0) / 0.3), .regularized = false, .streaming_stores = streaming,
                              .threaded = true};
   return s;
 }
