@@ -17,7 +17,7 @@ import re
 import subprocess
 import sys
 
-TOP = ("cases", "docs", "tools", "data", "scripts", "src", "bench", "tests", "app", "validate")
+TOP = ("cases", "docs", "tools", "data", "scripts", "src", "bench", "tests", "app", "validate", "study")
 PATH = re.compile(r"`([^`\s]*?(?:%s)/[^`\s]*)`" % "|".join(TOP))
 # A command: in a code block, or in backticks, or as a path to the binary (prose says "hemoscale resolves ...").
 COMMAND = re.compile(r"(?:`|/)hemoscale\s+([a-z][a-z-]*)")
@@ -30,7 +30,7 @@ INLINE = re.compile(r"`([^`]+)`")
 TOML_KEY = re.compile(r"^\s*([a-z][a-z0-9_]*)\s*=")
 COMMAND_LINE = re.compile(r"\bhemoscale\s+([a-z][a-z-]*)([^`#|]*)")
 OPTION = re.compile(r"(?<![\w-])(--[a-z][a-z-]*)")
-CODE_FILES = ("src/**/*.[ch]pp", "app/*.[ch]pp", "bench/*.[ch]pp", "tools/*.py", "tests/**/*.[ch]pp",
+CODE_FILES = ("src/**/*.[ch]pp", "app/*.[ch]pp", "bench/*.[ch]pp", "validate/*.[ch]pp", "study/*.[ch]pp", "tools/*.py", "tests/**/*.[ch]pp",
               "tests/**/*.py", "tests/**/CMakeLists.txt", "scripts/*", "cases/**/*.toml", "data/**/*.toml",
               "CMakeLists.txt", "src/**/CMakeLists.txt")
 
