@@ -23,6 +23,7 @@
 #include "regression/feynman_table.hpp"
 #include "regression/infix.hpp"
 #include "regression/model_selection.hpp"
+#include "regression/recovery_judge.hpp"
 
 namespace hs::bench {
 namespace {
@@ -41,32 +42,11 @@ using Sample = hsr::FeynmanSample;
 
 Sample sample(const Equation& eq, std::size_t n, std::uint64_t seed) { return hsr::sample_feynman(eq, n, seed); }
 
-struct Verdict {
-  std::string expression;
-  double r2_test = 0.0;
-  double max_rel_error = 0.0;
-  bool symbolic = false, exact = false;
+/// A recovery verdict (regression/recovery_judge.hpp: noise-free, so canonical forms at 1e-6 or the numeric rule)
+/// and the search's wall time.
+struct Timed : hsr::RecoveryVerdict {
   double seconds = 0.0;
 };
-
-// Exact: the same canonical text as the truth, or test R^2 > 0.999999 with the right structure, taken to
-// mean the same variables and a relative deviation <= 1e-4 everywhere on 1000 fresh points.
-Verdict judge(const Equation& eq, const hsr::Expression& model, double seconds) {
-  const Sample fresh = sample(eq, 1000, 4242);
-  std::vector<double> p(fresh.y.size());
-  hsr::CompiledProgram(model).evaluate(hsr::ColumnData(fresh.x).view(), p);
-  Verdict v;
-  v.expression = hsr::to_infix(model, eq.names);
-  v.r2_test = hsr::r_squared(fresh.y, p);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    v.max_rel_error = std::max(v.max_rel_error, std::abs(p[i] - fresh.y[i]) / std::abs(fresh.y[i]));
-  }
-  v.symbolic = hsr::symbolic_match(model, eq.truth, eq.names);
-  const bool right_structure = model.variables() == eq.truth.variables() && v.max_rel_error <= 1e-4;
-  v.exact = v.symbolic || (v.r2_test > 0.999999 && right_structure);
-  v.seconds = seconds;
-  return v;
-}
 
 // The same budget for both configurations: population x generations (quick: a smoke test).
 hsr::SearchSettings budget(hsr::SearchSettings s, bool quick, std::uint64_t seed) {
@@ -81,7 +61,7 @@ hsr::SearchSettings budget(hsr::SearchSettings s, bool quick, std::uint64_t seed
   return s;
 }
 
-Verdict run_one(const Equation& eq, bool full, bool quick, int threads) {
+Timed run_one(const Equation& eq, bool full, bool quick, int threads) {
   const Sample data = sample(eq, 400, 17);
   hsr::SearchSettings s = budget(full ? hsr::full_engine_defaults() : hsr::gplearn_defaults(), quick, 1234);
   s.threads = threads;
@@ -98,7 +78,7 @@ Verdict run_one(const Equation& eq, bool full, bool quick, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto fit = hsr::fit_validated(s, v, data.x, data.y);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return judge(eq, fit.expression, seconds);
+  return {hsr::judge_recovery(eq, fit.expression, 0.0), seconds};
 }
 
 double median(std::vector<double> v) {
@@ -142,8 +122,8 @@ int run_regression_bench(const hs::common::TaskOptions& options) {
   const std::vector<Equation> table = hsr::read_feynman_table(feynman_csv);
   std::vector<std::string> missed;
   for (const auto& eq : table) {
-    const Verdict g = run_one(eq, false, options.quick, threads);
-    const Verdict f = run_one(eq, true, options.quick, threads);
+    const Timed g = run_one(eq, false, options.quick, threads);
+    const Timed f = run_one(eq, true, options.quick, threads);
     exact_full += f.exact ? 1 : 0;
     if (!f.exact) missed.push_back(eq.id);
     r2_full += f.r2_test > 0.999 ? 1 : 0;

@@ -41,8 +41,7 @@ void read_probabilities(ConfigSection& s, hsr::SearchSettings& r) {
 }
 
 hsr::SearchSettings read_search(ConfigSection s) {
-  const std::string engine = s.one_of_or("engine", {"full", "gplearn"}, "full");
-  hsr::SearchSettings r = engine == "full" ? hsr::full_engine_defaults() : hsr::gplearn_defaults();
+  hsr::SearchSettings r = default_fit_search(s.one_of_or("engine", {"full", "gplearn"}, "full"));
   r.functions = read_functions(s, r.functions);
   r.population_size = static_cast<int>(s.integer_in_or("population_size", 2, 10'000'000, r.population_size));
   r.generations = static_cast<int>(s.integer_in_or("generations", 1, 1'000'000, r.generations));
@@ -70,8 +69,9 @@ hsr::SearchSettings read_search(ConfigSection s) {
   r.penalise_duplicates = s.boolean_or("penalise_duplicates", r.penalise_duplicates);
   r.lm_max_rows = static_cast<int>(s.integer_in_or("lm_max_rows", 1, 1 << 30, r.lm_max_rows));
   r.selection_tolerance = s.number_in_or("selection_tolerance", 1.0, 1e6, r.selection_tolerance);
-  r.seed = static_cast<std::uint64_t>(s.integer_in_or("seed", 0, std::numeric_limits<long>::max(), 0));
-  r.threads = static_cast<int>(s.integer_in_or("threads", 1, 1024, 1));
+  r.seed = static_cast<std::uint64_t>(s.integer_in_or("seed", 0, std::numeric_limits<long>::max(),
+                                                      static_cast<long>(r.seed)));
+  r.threads = static_cast<int>(s.integer_in_or("threads", 1, 1024, r.threads));
   return r;
 }
 
@@ -113,6 +113,13 @@ void read_closure(ConfigSection root, FitRequest& r) {
 }
 
 }  // namespace
+
+hsr::SearchSettings default_fit_search(std::string_view engine) {
+  hsr::SearchSettings r = engine == "gplearn" ? hsr::gplearn_defaults() : hsr::full_engine_defaults();
+  r.seed = 0;
+  r.threads = 1;
+  return r;
+}
 
 FitRequest read_fit_request(const std::filesystem::path& file) {
   auto config = hs::common::ConfigFile::load(file, "fit file");

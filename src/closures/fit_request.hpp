@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct FitRequest {
   hs::regression::ValidationSettings validation;
   bool plot = true;
 };
+
+/// What `hemoscale fit` searches with when FIT.toml's [search] holds no key but `engine` ("full" or "gplearn"):
+/// every fit default in one place, so that `hemoscale bench feynman` measures exactly what a user gets.
+[[nodiscard]] hs::regression::SearchSettings default_fit_search(std::string_view engine = "full");
 
 /// Throws hs::common::ConfigError (file, key, value, what is allowed) for any bad or unknown key.
 [[nodiscard]] FitRequest read_fit_request(const std::filesystem::path& file);

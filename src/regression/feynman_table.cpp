@@ -2,7 +2,9 @@
 // Reading and sampling the AI-Feynman table, and the symbolic judge of recovery.
 #include "regression/feynman_table.hpp"
 
+#include <cctype>
 #include <fstream>
+#include <map>
 #include <random>
 
 #include <fmt/format.h>
@@ -34,6 +36,30 @@ std::vector<std::string> csv_fields(const std::string& line) {
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
   for (std::size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) s.replace(p, from.size(), to);
   return s;
+}
+
+/// The table's Python syntax in this parser's: "**" -> "^", and whole identifiers renamed (pi -> its value,
+/// arcsin -> asin, ln -> log); a variable that merely contains "pi" or "ln" (e.g. "lnT") is left alone.
+std::string python_to_infix(const std::string& formula) {
+  static const std::map<std::string, std::string> renamed{{"pi", "3.141592653589793"}, {"arcsin", "asin"}, {"ln", "log"}};
+  const std::string text = replace_all(formula, "**", "^");
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto is_start = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+    const auto is_part = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    const bool after_digit = i > 0 && (std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.');
+    if (!is_start(text[i]) || after_digit) {   // after_digit: the "e" of 1e-3 is not an identifier
+      out += text[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && is_part(text[end])) ++end;
+    const std::string word = text.substr(i, end - i);
+    const auto it = renamed.find(word);
+    out += it == renamed.end() ? word : it->second;
+    i = end;
+  }
+  return out;
 }
 
 std::string trim(const std::string& s) {
@@ -88,7 +114,7 @@ std::vector<FeynmanEquation> read_feynman_table(const std::filesystem::path& fil
       eq.id = trim(fields[c_id]);
       eq.formula = trim(fields[c_formula]);
       parse_ranges(fields[c_ranges], eq);
-      eq.truth = parse_infix(replace_all(replace_all(eq.formula, "**", "^"), "pi", "3.141592653589793"), eq.names);
+      eq.truth = parse_infix(python_to_infix(eq.formula), eq.names);
       out.push_back(std::move(eq));
     } catch (const std::exception& e) {
       throw hs::common::ConfigError(fmt::format("{}:{}: {}", file.string(), number, e.what()));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The AI-Feynman ground-truth table (data/reference/feynman_sr_subset10.csv): equations, variable ranges, samples.
+// The AI-Feynman ground-truth tables (data/reference/feynman_ai100.csv and its 10-equation subset): equations,
+// variable ranges, samples.
 #pragma once
 
 #include <cstdint>
@@ -21,8 +22,8 @@ struct FeynmanEquation {
 };
 
 /// Reads the CSV (header feynman_id, formula_python, variables_with_uniform_ranges, ...; the ranges column is quoted,
-/// "x1:[1,5]; x2:[1,5]"). "**" is read as "^" and "pi" as its value. Throws hs::common::ConfigError naming the file,
-/// the line and what is wrong.
+/// "x1:[1,5]; x2:[1,5]"). "**" is read as "^", the identifiers pi as its value, arcsin as asin and ln as log.
+/// Throws hs::common::ConfigError naming the file, the line and what is wrong.
 [[nodiscard]] std::vector<FeynmanEquation> read_feynman_table(const std::filesystem::path& file);
 
 /// n noise-free rows, each variable uniform in its range (std::mt19937_64 with `seed`): columns x[var][row], y[row].

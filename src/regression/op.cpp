@@ -14,12 +14,12 @@ struct OpInfo {
   int arity;
 };
 
-constexpr std::array<OpInfo, 18> table{{
+constexpr std::array<OpInfo, 19> table{{
     {Op::Const, "const", 0}, {Op::Var, "var", 0},   {Op::Add, "add", 2},   {Op::Sub, "sub", 2},
     {Op::Mul, "mul", 2},     {Op::Div, "div", 2},   {Op::Pow, "pow", 2},   {Op::Min, "min", 2},
     {Op::Max, "max", 2},     {Op::Sqrt, "sqrt", 1}, {Op::Log, "log", 1},   {Op::Exp, "exp", 1},
     {Op::Neg, "neg", 1},     {Op::Inv, "inv", 1},   {Op::Abs, "abs", 1},   {Op::Sin, "sin", 1},
-    {Op::Cos, "cos", 1},     {Op::Tanh, "tanh", 1},
+    {Op::Cos, "cos", 1},     {Op::Tanh, "tanh", 1},  {Op::Asin, "asin", 1},
 }};
 
 }  // namespace

@@ -15,7 +15,7 @@ namespace hs::regression {
 enum class Op : int {   // int, not uint8_t: GCC 12 gives false -Wstringop-overflow on byte-enum vectors
   Const, Var,
   Add, Sub, Mul, Div, Pow, Min, Max,                        // binary
-  Sqrt, Log, Exp, Neg, Inv, Abs, Sin, Cos, Tanh,            // unary
+  Sqrt, Log, Exp, Neg, Inv, Abs, Sin, Cos, Tanh, Asin,      // unary
 };
 
 /// gplearn functions.py: div, log and inv are "protected" below this magnitude of their argument.
@@ -48,6 +48,8 @@ inline constexpr double exp_argument_cap = 230.0;   // exp(230) ~ 7.7e99 < satur
 [[nodiscard]] inline double protected_inv(double x) { return std::abs(x) > protect_threshold ? 1.0 / x : 0.0; }
 [[nodiscard]] inline double protected_exp(double x) { return std::exp(std::min(x, exp_argument_cap)); }
 [[nodiscard]] inline double protected_sqrt(double x) { return std::sqrt(std::abs(x)); }
+/// arcsin of the argument clamped to [-1, 1] (the edge value outside), so that no finite argument gives NaN.
+[[nodiscard]] inline double protected_asin(double x) { return std::asin(std::clamp(x, -1.0, 1.0)); }
 
 /// The protected scalar semantics of a function op (b is ignored for unary ops).
 [[nodiscard]] inline double apply(Op op, double a, double b) {
@@ -68,6 +70,7 @@ inline constexpr double exp_argument_cap = 230.0;   // exp(230) ~ 7.7e99 < satur
     case Op::Sin: return std::sin(a);
     case Op::Cos: return std::cos(a);
     case Op::Tanh: return std::tanh(a);
+    case Op::Asin: return protected_asin(a);
     case Op::Const:
     case Op::Var: break;
   }

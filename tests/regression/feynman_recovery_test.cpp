@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -38,6 +39,22 @@ TEST(FeynmanTable, ReadsTheTenEquationsWithTheirRanges) {
   const double zero[1] = {0.0};
   EXPECT_NEAR(gauss.truth.evaluate(zero), 0.3989422804014327, 1e-15);
   EXPECT_THROW((void)hsr::read_feynman_table(kTable + ".missing"), hs::common::ConfigError);
+}
+
+// The whole AI-Feynman table (data/reference/feynman_ai100.csv): 100 equations, each formula parses with the
+// table's own variables (arcsin, ln and pi included) and is finite everywhere on its sampling ranges (a NaN would
+// mean a misread range or operator, e.g. sqrt of a negative, and would poison every search on it).
+TEST(FeynmanTable, TheFullTableParsesAndIsFiniteOnItsRanges) {
+  const auto table = hsr::read_feynman_table(std::string(HS_SOURCE_DIR) + "/data/reference/feynman_ai100.csv");
+  ASSERT_EQ(table.size(), 100u);
+  for (const auto& eq : table) {
+    const auto sample = hsr::sample_feynman(eq, 200, 3);
+    for (double y : sample.y) ASSERT_TRUE(std::isfinite(y)) << eq.id << " = " << eq.formula;
+  }
+  const double snell[2] = {0.5, 1.0};   // I.26.2 arcsin(n*sin(theta2)), n = 0.5, theta2 = 1
+  EXPECT_NEAR(find(table, "I.26.2").truth.evaluate(snell), std::asin(0.5 * std::sin(1.0)), 1e-15);
+  const double gas[5] = {2.0, 1.5, 3.0, 1.0, 4.0};   // I.44.4 n*kb*T*ln(V2/V1), V1 = 1, V2 = 4
+  EXPECT_NEAR(find(table, "I.44.4").truth.evaluate(gas), 2.0 * 1.5 * 3.0 * std::log(4.0), 1e-12);
 }
 
 // Recovery, judged symbolically (hsr::symbolic_match: the canonical text after simplification must equal the

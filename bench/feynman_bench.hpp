@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// The AI-Feynman recovery benchmark: the whole table, three noise levels, several seeds, as `hemoscale fit` runs.
+#pragma once
+
+#include "common/case_request.hpp"
+
+namespace hs::bench {
+
+/// `hemoscale bench feynman [--quick] [--json FILE]`: exact recovery and fresh-point R2 on the 100 equations of
+/// data/reference/feynman_ai100.csv at noise 0, 0.001 and 0.01, with `hemoscale fit`'s default search beside
+/// gplearn's configuration at the same budget. With --json, every finished search is appended to FILE's
+/// .runs.jsonl archive and a rerun skips what it holds (hours of work resume after any interruption); the
+/// per-equation table goes to FILE's _equations.csv.
+int run_feynman_bench(const hs::common::TaskOptions& options);
+
+}  // namespace hs::bench
