@@ -160,10 +160,11 @@ int run_feynman_bench(const hs::common::TaskOptions& options) {
   std::size_t finished = 0, computed = 0;
   double computed_seconds = 0.0;
   std::vector<nlohmann::json> results;
-  for (const auto& c : configs) {
-    const std::string fp = fingerprint(c, table_sha);
+  // Seed outermost: an interrupted run has whole seeds of every configuration and noise level to compare.
+  for (const std::uint64_t seed : seeds) {
     for (const double noise : noise_levels) {
-      for (const std::uint64_t seed : seeds) {
+      for (const auto& c : configs) {
+        const std::string fp = fingerprint(c, table_sha);
         for (const auto& eq : table) {
           const std::string key = run_key(c.name, eq.id, noise, seed);
           ++finished;
