@@ -2,15 +2,18 @@
 // Strict reading and writing of closure TOML files.
 #include "closures/closure_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "common/config/config_file.hpp"
 #include "common/errors.hpp"
 #include "common/io/atomic_file.hpp"
+#include "regression/dimension.hpp"
 #include "regression/infix.hpp"
 
 namespace hs::closures {
@@ -48,6 +51,22 @@ void read_variables(ConfigSection root, ClosureFile& c) {
     c.definitions.push_back(vars.string(name));
   }
   if (c.variables.empty()) root.fail("variables", "declares no variable");
+}
+
+void read_units(ConfigSection root, ClosureFile& c) {
+  auto units = root.section_or_empty("units");
+  for (const auto& key : units.keys()) {
+    if (key != c.output && std::find(c.variables.begin(), c.variables.end(), key) == c.variables.end()) {
+      units.fail(key, fmt::format("is neither the output \"{}\" nor a variable", c.output));
+    }
+    const std::string text = units.string(key);
+    try {
+      (void)hs::regression::parse_unit(text);
+    } catch (const std::invalid_argument& e) {
+      units.fail(key, e.what());
+    }
+    c.units[key] = text;
+  }
 }
 
 void read_validity(ConfigSection root, ClosureFile& c) {
@@ -104,6 +123,7 @@ ClosureFile ClosureFile::load(const std::filesystem::path& file) {
     root.fail("expression", e.what());
   }
   read_validity(root, c);
+  read_units(root, c);
   auto fit = root.section_or_empty("fit");
   for (const auto& key : fit.keys()) c.fit[key] = fit.number_in(key, -HUGE_VAL, HUGE_VAL);
   read_pareto(root, c);
@@ -130,6 +150,10 @@ void ClosureFile::write(const std::filesystem::path& file) const {
   s << "\n[validity]   # min and max of the training inputs\n";
   for (std::size_t j = 0; j < variables.size(); ++j) {
     s << variables[j] << " = [" << number(validity[j].lo) << ", " << number(validity[j].hi) << "]\n";
+  }
+  if (!units.empty()) {
+    s << "\n[units]   # SI; \"1\" = dimensionless\n";
+    for (const auto& [k, v] : units) s << k << " = " << quoted(v) << "\n";
   }
   s << "\n[fit]\n";
   for (const auto& [k, v] : fit) s << k << " = " << number(v) << "\n";

@@ -31,6 +31,8 @@ struct ClosureFile {
   std::vector<std::string> variables;       // expression variable names (feature order)
   std::vector<std::string> definitions;     // one per variable
   std::vector<Interval> validity;           // one per variable: min/max of the training inputs
+  std::map<std::string, std::string> units; // [units]: SI unit of the output and of each variable ("1":
+                                            // dimensionless); empty when the fit was given none
   std::map<std::string, double> fit;        // r2_train, r2_cv, r2_test, rmse_*, mae_*, n_train, ...
   std::vector<ParetoPoint> pareto;
   std::string dataset;                      // provenance

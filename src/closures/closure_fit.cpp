@@ -107,6 +107,10 @@ ClosureFile make_closure(const FitRequest& r, const Table& t, const hsr::Validat
   }
   c.variables = r.features;
   c.definitions = r.definitions;
+  if (!r.target_unit.empty()) c.units[r.output] = r.target_unit;
+  for (std::size_t j = 0; j < r.features.size(); ++j) {
+    if (!r.feature_units[j].empty()) c.units[r.features[j]] = r.feature_units[j];
+  }
   for (const auto& col : t.x) {
     Interval range{HUGE_VAL, -HUGE_VAL};
     for (std::size_t i : m.split.train) range = {std::min(range.lo, col[i]), std::max(range.hi, col[i])};

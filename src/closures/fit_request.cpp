@@ -3,6 +3,7 @@
 #include "closures/fit_request.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -91,6 +92,30 @@ void read_data(ConfigSection root, FitRequest& r) {
   r.validation.folds = static_cast<int>(data.integer_in_or("folds", 0, 100, 5));
 }
 
+/// One unit string, checked: the key's own error (file, key, value, what is allowed) when it does not parse.
+std::string checked_unit(ConfigSection& units, const std::string& key) {
+  const std::string text = units.string(key);
+  try {
+    (void)hsr::parse_unit(text);
+  } catch (const std::invalid_argument& e) {
+    units.fail(key, e.what());
+  }
+  return text;
+}
+
+void read_units(ConfigSection root, FitRequest& r) {
+  auto units = root.section_or_empty("units");
+  for (const auto& key : units.keys()) {
+    if (key != r.target && std::find(r.features.begin(), r.features.end(), key) == r.features.end()) {
+      units.fail(key, "is neither the target nor a feature of [data]");
+    }
+  }
+  for (const auto& f : r.features) {
+    r.feature_units.push_back(units.has(f) ? checked_unit(units, f) : find_input(f) ? "1" : "");
+  }
+  r.target_unit = units.has(r.target) ? checked_unit(units, r.target) : r.kind != "generic" ? "1" : "";
+}
+
 void read_closure(ConfigSection root, FitRequest& r) {
   auto c = root.section("closure");
   r.name = c.string("name");
@@ -110,6 +135,7 @@ void read_closure(ConfigSection root, FitRequest& r) {
                                                               : fmt::format("column {} of the dataset", f);
     r.definitions.push_back(vars.string_or(f, fallback));
   }
+  read_units(root, r);
 }
 
 }  // namespace
@@ -129,6 +155,12 @@ FitRequest read_fit_request(const std::filesystem::path& file) {
   read_data(root, r);
   read_closure(root, r);
   r.search = read_search(root.section_or_empty("search"));
+  const bool all_units = !r.target_unit.empty() && std::none_of(r.feature_units.begin(), r.feature_units.end(),
+                                                                [](const std::string& u) { return u.empty(); });
+  if (all_units && root.section_or_empty("search").boolean_or("dimensional_constraints", true)) {
+    for (const auto& u : r.feature_units) r.search.feature_dimensions.push_back(hsr::parse_unit(u));
+    r.search.target_dimension = hsr::parse_unit(r.target_unit);
+  }
   r.validation.select_from_front = true;
   r.plot = root.section_or_empty("output").boolean_or("plot", true);
   config->finish();

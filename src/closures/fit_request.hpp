@@ -24,6 +24,10 @@ namespace hs::closures {
 ///             (or "auto"), p_crossover, p_subtree_mutation, p_hoist_mutation, p_point_mutation,
 ///             p_point_replace, stopping_criteria, max_length, linear_scaling, lm_iterations, lm_max_rows,
 ///             max_seconds, selection_tolerance, restarts, lexicase, penalise_duplicates, seed, threads
+///   [units]   optional SI unit per feature and for the target, e.g. d = "m", mu = "Pa*s", F = "N" ("1" for a
+///             dimensionless column); closure inputs and the drag/lift/deformation outputs are dimensionless and
+///             need none. With every unit known the search keeps to dimensionally consistent formulas
+///             ([search] dimensional_constraints = false turns that off) and the closure file records them.
 ///   [output]  plot = true
 struct FitRequest {
   std::filesystem::path fit_file;
@@ -34,6 +38,8 @@ struct FitRequest {
   /// files), e.g. shear_ratio = "gamma_plus * 0.0501 / re_p" (gammadot d_p / u from gammadot R_c^2 / nu in one tube).
   std::vector<std::pair<std::string, std::string>> derived;
   std::vector<std::string> definitions;   // one per feature
+  std::vector<std::string> feature_units; // one per feature ("" = not given)
+  std::string target_unit;                // "" = not given
   std::string name, kind, output;
   std::string reference_velocity = "slip";   // lift only
   hs::regression::SearchSettings search;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 
 #include "regression/compiled_program.hpp"
 #include "regression/simplify.hpp"
@@ -145,6 +146,10 @@ ValidatedModel fit_validated(const SearchSettings& search, const ValidationSetti
     }
   }
   out.expression = chosen && validation.select_from_front ? chosen->expression : out.search.best;
+  if (out.expression.empty()) {   // only with dimensional constraints: every program was inconsistent
+    throw std::runtime_error("no dimensionally consistent formula was found: check the units given to the fit, or "
+                             "allow more generations");
+  }
   if (search.lm_iterations > 0) {
     const Expression refit = refit_constants(out.expression, train_x.view(), y_train, validation.refit_iterations);
     const Expression pruned = prune_constants(refit, train_x.view(), y_train, search.metric, validation.refit_iterations);

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "regression/dimension.hpp"
 #include "regression/metrics.hpp"
 #include "regression/op.hpp"
 
@@ -51,6 +53,10 @@ struct SearchSettings {
   bool penalise_duplicates = false;          // clones (same loss and length) lose every tournament but one
   double max_seconds = 0.0;                  // wall-clock budget (0 = none); breaks reproducibility if hit
   double selection_tolerance = 1.5;          // Pareto model choice: simplest with loss <= tol * best (PySR uses 1.5)
+
+  // --- dimensional constraints (beyond gplearn; as PySR's, with constants as wildcards) ---
+  std::vector<Dimension> feature_dimensions;   // empty: none; else one per feature
+  std::optional<Dimension> target_dimension;   // the output's (free under linear scaling: the scale takes it)
 };
 
 /// gplearn's defaults (the "gplearn" configuration of the benchmark).

@@ -113,6 +113,11 @@ void SymbolicRegressor::evaluate(Individual& ind, const DataView& x, std::span<c
   }
   for (double& v : f) v = ind.model.offset + ind.model.scale * v;
   ind.loss = loss(settings_.metric, y, f);
+  if (!settings_.feature_dimensions.empty()) {
+    // Under linear scaling the fitted scale is a free constant, so the output's dimension is always reachable.
+    const auto& target = settings_.linear_scaling ? std::optional<Dimension>{} : settings_.target_dimension;
+    ind.consistent = dimensionally_consistent(ind.model.tree, settings_.feature_dimensions, target);
+  }
   if (settings_.lexicase) {
     const std::size_t cases = static_cast<std::size_t>(std::max(1, settings_.lexicase_cases));
     const std::size_t stride = x.rows <= cases ? 1 : (x.rows + cases - 1) / cases;
@@ -182,14 +187,16 @@ SymbolicRegressor::Individual SymbolicRegressor::offspring(const std::vector<Ind
 
 void SymbolicRegressor::record(const std::vector<Individual>& pop, const DataView& x, std::span<const double> y,
                                double y_scale, ParetoFront& archive, SearchResult& result) const {
-  std::size_t best = 0;
+  // Only dimensionally consistent programs are recorded: the front and the best hold no inconsistent formula.
+  std::size_t best = pop.size();
   std::vector<std::size_t> best_of_length(pop.size() + 1, pop.size());
   for (std::size_t i = 0; i < pop.size(); ++i) {
-    if (pop[i].loss < pop[best].loss) best = i;
+    if (!pop[i].consistent) continue;
+    if (best == pop.size() || pop[i].loss < pop[best].loss) best = i;
     const std::size_t len = std::min(pop[i].model.tree.size(), pop.size());
     if (best_of_length[len] == pop.size() || pop[i].loss < pop[best_of_length[len]].loss) best_of_length[len] = i;
   }
-  if (result.generations_run == 0 || pop[best].loss < result.best_loss) {
+  if (best < pop.size() && (result.best.empty() || pop[best].loss < result.best_loss)) {
     result.best_loss = pop[best].loss;
     result.best = materialize(pop[best].model, y_scale);
   }
@@ -226,6 +233,9 @@ SearchResult SymbolicRegressor::fit(const DataView& x, std::span<const double> y
     for (std::size_t i = 0; i < n && !fresh; ++i) {
       penalised[i] = pop[i].loss + c * static_cast<double>(pop[i].model.tree.size());
       if (!std::isfinite(penalised[i])) penalised[i] = std::numeric_limits<double>::infinity();
+      // A dimensionally inconsistent program loses every tournament against a consistent one (PySR's penalty,
+      // made absolute: it still breeds when a tournament draws nothing else).
+      if (!pop[i].consistent) penalised[i] = std::numeric_limits<double>::max();
     }
     if (!fresh && settings_.penalise_duplicates) penalise_clones(pop, penalised);
     std::unique_ptr<LexicaseSelector> lexicase;
@@ -254,7 +264,7 @@ SearchResult SymbolicRegressor::fit(const DataView& x, std::span<const double> y
     record(pop, x, y, y_scale, archive, result);
     result.generations_run = gen + 1;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (result.best_loss <= settings_.stopping_criteria) break;
+    if (!result.best.empty() && result.best_loss <= settings_.stopping_criteria) break;
     if (settings_.max_seconds > 0.0 && seconds > settings_.max_seconds) break;
   }
   result.front = archive.front();

@@ -42,6 +42,7 @@ class SymbolicRegressor {
     double loss = 0.0;
     long evaluations = 0;
     std::vector<double> case_errors;   // |residual| on the lexicase cases (empty without lexicase)
+    bool consistent = true;            // dimensionally (always, without feature_dimensions)
   };
   [[nodiscard]] Individual offspring(const std::vector<Individual>& pop, const std::vector<double>& penalised,
                                      const GeneticOperators& ops, const LexicaseSelector* lexicase,
