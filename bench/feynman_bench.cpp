@@ -59,23 +59,25 @@ struct Configuration {
 
 /// "hemoscale": exactly `hemoscale fit`'s defaults (closures::default_fit_search and the [data] validation defaults)
 /// with the function set above. "gplearn": gplearn's defaults and its choice of model (lowest training loss), at the
-/// same population, generations and wall-clock cap. --quick shrinks the budget of both alike.
+/// same population, generations and wall-clock cap (restarts are the full engine's, not a budget). --quick
+/// shrinks the budget of both alike.
 std::vector<Configuration> configurations(bool quick, int threads) {
-  std::vector<Configuration> out;
-  for (const std::string name : {"hemoscale", "gplearn"}) {
-    Configuration c{name, hs::closures::default_fit_search(name == "gplearn" ? "gplearn" : "full"), {}};
+  Configuration ours{"hemoscale", hs::closures::default_fit_search("full"), {}};
+  Configuration theirs{"gplearn", hs::closures::default_fit_search("gplearn"), {}};
+  theirs.validation.folds = 0;
+  theirs.validation.select_from_front = false;
+  if (quick) {
+    ours.search.population_size = 300;
+    ours.search.generations = 20;
+    ours.search.restarts = 2;
+  }
+  theirs.search.population_size = ours.search.population_size;
+  theirs.search.generations = ours.search.generations;
+  theirs.search.max_seconds = ours.search.max_seconds > 0.0 ? ours.search.max_seconds : 60.0;   // bloat cap
+  std::vector<Configuration> out{ours, theirs};
+  for (auto& c : out) {
     c.search.functions = feynman_functions();
-    c.search.max_seconds = 60.0;   // the wall-clock budget per equation a user may wait for (issue #29, item 2)
-    if (quick) {
-      c.search.population_size = 300;
-      c.search.generations = 10;
-    }
-    c.search.threads = threads;    // results do not depend on it (SymbolicRegressor), the wall clock does
-    if (name == "gplearn") {
-      c.validation.folds = 0;
-      c.validation.select_from_front = false;
-    }
-    out.push_back(std::move(c));
+    c.search.threads = threads;   // results do not depend on it (SymbolicRegressor), the wall clock does
   }
   return out;
 }

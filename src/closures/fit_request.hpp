@@ -47,8 +47,9 @@ struct FitRequest {
   bool plot = true;
 };
 
-/// What `hemoscale fit` searches with when FIT.toml's [search] holds no key but `engine` ("full" or "gplearn"):
-/// every fit default in one place, so that `hemoscale bench feynman` measures exactly what a user gets.
+/// What `hemoscale fit` searches with when FIT.toml's [search] holds no budget key (population_size, generations,
+/// restarts, stopping_criteria, max_seconds) for `engine` ("full" or "gplearn"): every fit default in one place,
+/// so that `hemoscale bench feynman` measures exactly what a user gets. Seed 0, every core.
 [[nodiscard]] hs::regression::SearchSettings default_fit_search(std::string_view engine = "full");
 
 /// Throws hs::common::ConfigError (file, key, value, what is allowed) for any bad or unknown key.
