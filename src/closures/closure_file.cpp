@@ -13,6 +13,7 @@
 #include "common/config/config_file.hpp"
 #include "common/errors.hpp"
 #include "common/io/atomic_file.hpp"
+#include "regression/compiled_program.hpp"
 #include "regression/dimension.hpp"
 #include "regression/infix.hpp"
 
@@ -66,6 +67,22 @@ void read_units(ConfigSection root, ClosureFile& c) {
       units.fail(key, e.what());
     }
     c.units[key] = text;
+  }
+}
+
+void read_uncertainty(ConfigSection root, ClosureFile& c) {
+  if (!root.has("uncertainty")) return;
+  auto u = root.section("uncertainty");
+  const auto replicates = static_cast<std::size_t>(u.integer_in("replicates", 1, 100000));
+  c.residual_rmse = u.number_in("residual_rmse", 0.0, HUGE_VAL);
+  const std::size_t k = c.parsed().constant_positions().size();
+  const auto flat = u.has("constants") ? u.numbers_in("constants", -HUGE_VAL, HUGE_VAL, 0) : std::vector<double>{};
+  if (flat.size() != replicates * k) {
+    u.fail("constants", fmt::format("holds {} numbers; {} replicates x {} constants of the expression need {}",
+                                    flat.size(), replicates, k, replicates * k));
+  }
+  for (std::size_t b = 0; b < replicates; ++b) {
+    c.bootstrap_constants.emplace_back(flat.begin() + static_cast<long>(b * k), flat.begin() + static_cast<long>((b + 1) * k));
   }
 }
 
@@ -124,6 +141,7 @@ ClosureFile ClosureFile::load(const std::filesystem::path& file) {
   }
   read_validity(root, c);
   read_units(root, c);
+  read_uncertainty(root, c);
   auto fit = root.section_or_empty("fit");
   for (const auto& key : fit.keys()) c.fit[key] = fit.number_in(key, -HUGE_VAL, HUGE_VAL);
   read_pareto(root, c);
@@ -133,6 +151,26 @@ ClosureFile ClosureFile::load(const std::filesystem::path& file) {
 }
 
 hs::regression::Expression ClosureFile::parsed() const { return hs::regression::parse_infix(expression, variables); }
+
+std::optional<std::pair<double, double>> ClosureFile::prediction_interval(std::span<const double> inputs) const {
+  if (bootstrap_constants.empty()) return std::nullopt;
+  hs::regression::CompiledProgram program(parsed());
+  const double centre = program.evaluate_point(inputs.data());
+  std::vector<double> p;
+  for (const auto& set : bootstrap_constants) {
+    program.set_constants(set);
+    p.push_back(program.evaluate_point(inputs.data()));
+  }
+  std::sort(p.begin(), p.end());
+  auto quantile = [&](double q) {   // linear interpolation between order statistics
+    const double pos = q * static_cast<double>(p.size() - 1);
+    const auto i = static_cast<std::size_t>(pos);
+    return i + 1 < p.size() ? p[i] + (pos - static_cast<double>(i)) * (p[i + 1] - p[i]) : p.back();
+  };
+  const double noise = 1.96 * residual_rmse;
+  const double below = std::max(0.0, centre - quantile(0.025)), above = std::max(0.0, quantile(0.975) - centre);
+  return std::pair{centre - std::hypot(below, noise), centre + std::hypot(above, noise)};
+}
 
 void ClosureFile::write(const std::filesystem::path& file) const {
   std::ostringstream s;
@@ -154,6 +192,16 @@ void ClosureFile::write(const std::filesystem::path& file) const {
   if (!units.empty()) {
     s << "\n[units]   # SI; \"1\" = dimensionless\n";
     for (const auto& [k, v] : units) s << k << " = " << quoted(v) << "\n";
+  }
+  if (!bootstrap_constants.empty()) {
+    s << "\n[uncertainty]   # pairs bootstrap of the training rows, the constants refitted per replicate; "
+         "ClosureFile::prediction_interval\nreplicates    = " << bootstrap_constants.size()
+      << "\nresidual_rmse = " << number(residual_rmse) << "\nconstants     = [";
+    for (std::size_t b = 0; b < bootstrap_constants.size(); ++b) {
+      s << "\n ";
+      for (double v : bootstrap_constants[b]) s << " " << number(v) << ",";
+    }
+    s << "\n]\n";
   }
   s << "\n[fit]\n";
   for (const auto& [k, v] : fit) s << k << " = " << number(v) << "\n";

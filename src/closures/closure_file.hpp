@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <span>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -34,6 +37,11 @@ struct ClosureFile {
   std::map<std::string, std::string> units; // [units]: SI unit of the output and of each variable ("1":
                                             // dimensionless); empty when the fit was given none
   std::map<std::string, double> fit;        // r2_train, r2_cv, r2_test, rmse_*, mae_*, n_train, ...
+  /// [uncertainty]: the expression's constants (prefix order) refitted on bootstrap resamples of the training rows,
+  /// one set per replicate, and the residual rmse (cross-validated) of new data around the formula; empty when the
+  /// closure was fitted without them.
+  std::vector<std::vector<double>> bootstrap_constants;
+  double residual_rmse = 0.0;
   std::vector<ParetoPoint> pareto;
   std::string dataset;                      // provenance
   std::string dataset_sha256;
@@ -51,6 +59,10 @@ struct ClosureFile {
   void write(const std::filesystem::path& file) const;
   /// The parsed expression (feature j = variables[j]).
   [[nodiscard]] hs::regression::Expression parsed() const;
+  /// The 95% prediction interval at `inputs` (one value per variable): the 2.5 and 97.5 percentiles of the formula
+  /// over the bootstrap constants, each side widened in quadrature by 1.96 residual_rmse (new data scatter around
+  /// the formula, not only its constants do). nullopt without [uncertainty].
+  [[nodiscard]] std::optional<std::pair<double, double>> prediction_interval(std::span<const double> inputs) const;
 };
 
 }  // namespace hs::closures

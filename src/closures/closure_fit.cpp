@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <fstream>
+#include <random>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -18,7 +19,10 @@
 #include "common/io/csv_writer.hpp"
 #include "common/run_folder.hpp"
 #include "common/summary_schema.hpp"
+#include "regression/bootstrap_constants.hpp"
+#include "regression/cancellation.hpp"
 #include "regression/compiled_program.hpp"
+#include "regression/data_view.hpp"
 #include "regression/infix.hpp"
 
 namespace hs::closures {
@@ -95,6 +99,40 @@ void add_scores(ClosureFile& c, const char* tag, const hsr::Scores& s) {
   c.fit[fmt::format("mae_{}", tag)] = s.mae;
 }
 
+/// Bootstrap replicates of the constants refitted on (pairs bootstrap, Efron & Tibshirani 1993).
+constexpr int kBootstrapReplicates = 50;
+
+/// [uncertainty] and the fit's summary of it: the 95% band's half-width relative to the prediction over 256 seeded
+/// points of the validity box (median and max), and the cancellation ratio of the formula on its training rows.
+void add_uncertainty(ClosureFile& c, const FitRequest& r, const Table& t, const hsr::ValidatedModel& m) {
+  const hsr::ColumnData train = hsr::ColumnData::pick(t.x, m.split.train);
+  std::vector<double> y_train;
+  for (std::size_t i : m.split.train) y_train.push_back(t.y[i]);
+  std::vector<std::vector<double>> x_train(t.x.size());
+  for (std::size_t j = 0; j < t.x.size(); ++j) {
+    for (std::size_t i : m.split.train) x_train[j].push_back(t.x[j][i]);
+  }
+  c.bootstrap_constants = hsr::bootstrap_constants(m.expression, x_train, y_train, kBootstrapReplicates,
+                                                   r.search.seed + 7, r.validation.refit_iterations);
+  c.residual_rmse = r.validation.folds > 1 ? m.cv.rmse : m.train.rmse;
+  std::mt19937_64 rng(r.search.seed + 11);
+  std::vector<double> relative, point(c.validity.size());
+  for (int k = 0; k < 256; ++k) {
+    for (std::size_t j = 0; j < point.size(); ++j) {
+      point[j] = std::uniform_real_distribution<double>(c.validity[j].lo, c.validity[j].hi)(rng);
+    }
+    const auto band = c.prediction_interval(point);
+    const double centre = hsr::CompiledProgram(m.expression).evaluate_point(point.data());
+    if (band && std::abs(centre) > 0.0) relative.push_back((band->second - band->first) / 2.0 / std::abs(centre));
+  }
+  std::sort(relative.begin(), relative.end());
+  if (!relative.empty()) {
+    c.fit["pi95_relative_half_width_median"] = relative[relative.size() / 2];
+    c.fit["pi95_relative_half_width_max"] = relative.back();
+  }
+  c.fit["cancellation_ratio"] = hsr::cancellation_ratio(m.expression, train.view());
+}
+
 ClosureFile make_closure(const FitRequest& r, const Table& t, const hsr::ValidatedModel& m) {
   ClosureFile c;
   c.name = r.name;
@@ -116,6 +154,7 @@ ClosureFile make_closure(const FitRequest& r, const Table& t, const hsr::Validat
     for (std::size_t i : m.split.train) range = {std::min(range.lo, col[i]), std::max(range.hi, col[i])};
     c.validity.push_back(range);
   }
+  add_uncertainty(c, r, t, m);
   add_scores(c, "train", m.train);
   add_scores(c, "cv", m.cv);
   add_scores(c, "test", m.test);
@@ -190,6 +229,16 @@ ClosureFile run_fit(const FitRequest& request, const std::filesystem::path& out_
   if (!quiet) {
     fmt::print("{} = {}\n  R2 train {:.6f}, cv {:.6f}, test {:.6f}; {} generations, {:.1f} s\n", closure.output,
                closure.expression, model.train.r2, model.cv.r2, model.test.r2, model.search.generations_run, seconds);
+    if (closure.fit.count("pi95_relative_half_width_median") != 0) {
+      fmt::print("  95% prediction interval over the validity box: +-{:.1f}% (median), +-{:.1f}% (max)\n",
+                 100.0 * closure.fit.at("pi95_relative_half_width_median"),
+                 100.0 * closure.fit.at("pi95_relative_half_width_max"));
+    }
+  }
+  if (closure.fit.at("cancellation_ratio") > hsr::cancellation_warning_ratio) {
+    fmt::print(stderr, "warning: {} relies on a cancellation of large terms (they are {:.0f}x the result on the training "
+               "rows, median): a small change of the data can change it a lot; prefer a simpler Pareto member\n",
+               closure.name, closure.fit.at("cancellation_ratio"));
   }
   return closure;
 }
