@@ -21,7 +21,7 @@ using hs::common::Vec3;
 TEST(Stresslet, ARigidSphereInShearGivesEinsteinsTwoAndAHalf) {
   const double a = 4e-6, mu = 1.2e-3, gamma_dot = 100.0, p_inf = 37.0;
   hr::TriangleMesh mesh = hr::make_sphere_mesh(642);
-  for (auto& v : mesh.vertices_m) v = v * a;
+  for (auto& v : mesh.vertices_m) v = hs::common::normalized(v) * a;   // on the sphere exactly
   const auto area = hr::vertex_areas_m2(mesh);
   std::vector<Vec3> x, f;
   for (std::size_t k = 0; k < mesh.vertices_m.size(); ++k) {
