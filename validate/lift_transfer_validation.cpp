@@ -15,6 +15,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "closures/closure_file.hpp"
+#include "closures/closure_inputs.hpp"
 #include "closures/closure_registry.hpp"
 #include "closures/register_builtin.hpp"
 #include "common/check_list.hpp"
@@ -50,6 +52,8 @@ int validate_lift_transfer(const hs::common::TaskOptions& options) {
   const fs::path file = options.extra.empty() ? closure_in(source / "data" / "closures" / "resolved" / "lift_coefficient")
                                               : fs::path(options.extra);
   const auto closure = make_lift_closure({.model = "expression", .file = fs::absolute(file)});
+  const ClosureFile closure_file = ClosureFile::load(fs::absolute(file));   // its [uncertainty], if it has one
+  int inside_band = 0, with_band = 0;
   if (!fs::exists(csv)) {
     fmt::print("lift-transfer: no {} yet (run hemoscale campaign cases/campaign/tube-r15-transfer)\n", csv.string());
     return 1;
@@ -85,6 +89,17 @@ int validate_lift_transfer(const hs::common::TaskOptions& options) {
     const bool inside = closure->inside(in);
     const double predicted = closure->lift_coefficient(in);
     const double error_pct = 100.0 * (predicted - cl[i]) / std::abs(cl[i]);
+    // The closure's 95% prediction interval at the same (clamped) inputs: is the measured C_l a value the fit's own
+    // uncertainty allows? Reported, not a check (the band is the closure's, the tolerance above is the transfer's).
+    std::vector<double> x;
+    for (std::size_t j = 0; j < closure_file.variables.size(); ++j) {
+      const double v = in.*(find_input(closure_file.variables[j])->field);
+      x.push_back(std::clamp(v, closure_file.validity[j].lo, closure_file.validity[j].hi));
+    }
+    const auto band = closure_file.prediction_interval(x);
+    const bool in_band = band && band->first <= cl[i] && cl[i] <= band->second;
+    with_band += band ? 1 : 0;
+    inside_band += in_band ? 1 : 0;
     worst = std::max(worst, std::abs(error_pct));
     checks.expect(fmt::format("R_c {:.0f} um, Re {}, r* {}: C_l vs closure", radius[i] * 1e6, re[i], r_star[i]),
                   std::abs(error_pct) <= tolerance_pct, fmt::format("{:+.1f}% (band +-{:.3g}%)", error_pct, tolerance_pct));
@@ -93,9 +108,16 @@ int validate_lift_transfer(const hs::common::TaskOptions& options) {
                in.gamma_plus, in.shear_ratio, in.re_p);
     rows.push_back({{"radius_m", radius[i]}, {"re", re[i]}, {"r_star", r_star[i]}, {"cl", cl[i]}, {"cl_closure", predicted},
                     {"error_pct", error_pct}, {"inside_validity", inside}, {"gamma_plus", in.gamma_plus},
+                    {"cl_closure_pi95", band ? nlohmann::json::array({band->first, band->second}) : nlohmann::json()},
+                    {"inside_pi95", in_band},
                     {"shear_ratio", in.shear_ratio}, {"re_p", in.re_p}});
   }
   if (!table.rows.empty()) fmt::print("lift-transfer: max error {:.1f}% (tolerance {:.3g}%)\n", worst, tolerance_pct);
+  if (with_band > 0) {
+    fmt::print("lift-transfer: {} of {} measured C_l inside the closure's 95% prediction interval\n", inside_band, with_band);
+  } else {
+    fmt::print("lift-transfer: the closure has no [uncertainty] (fitted before prediction intervals): no band\n");
+  }
   checks.print("lift-transfer");
   if (options.json_file) {
     nlohmann::json result = {{"validation", "lift-transfer"},
@@ -103,6 +125,7 @@ int validate_lift_transfer(const hs::common::TaskOptions& options) {
                                                 {"dataset", csv.string()},
                                                 {"rows", rows},
                                                 {"max_error_pct", worst},
+                                                {"rows_inside_pi95", with_band > 0 ? nlohmann::json(inside_band) : nlohmann::json()},
                                                 {"tolerance_pct", tolerance_pct},
                                                 {"provenance", hs::common::provenance()}};
     checks.write_to(result);
