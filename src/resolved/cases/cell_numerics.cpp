@@ -82,11 +82,14 @@ namespace {
 /// The largest tau the case allows: max_tau, and with a reference shear rate also the Weissenberg bound. With
 /// dt = (tau - 1/2) dx^2 / (3 nu), Wi = gamma (tau - 1/2)^2 dx^2 / (3 nu), so Wi <= Wi_max is tau - 1/2 <=
 /// sqrt(3 nu Wi_max / (gamma dx^2)).
+/// The Weissenberg bound is the outer flow's (the plasma's shear rate at the walls); max_tau bounds the largest tau in
+/// the lattice, the cytoplasm's when the viscosity ratio exceeds 1.
 double tau_cap(const CellNumerics& n, double kinematic_viscosity_m2_s, double reference_shear_rate_1_s) {
-  if (reference_shear_rate_1_s <= 0.0) return n.max_tau;
+  const double max_tau = n.viscosity_ratio > 1.0 ? 0.5 + (n.max_tau - 0.5) / n.viscosity_ratio : n.max_tau;
+  if (reference_shear_rate_1_s <= 0.0) return max_tau;
   const double wi_tau = 0.5 + std::sqrt(3.0 * kinematic_viscosity_m2_s * n.max_lattice_weissenberg /
                                         (reference_shear_rate_1_s * n.dx_m * n.dx_m));
-  return std::min(n.max_tau, wi_tau);
+  return std::min(max_tau, wi_tau);
 }
 
 }  // namespace
@@ -109,7 +112,15 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
     n.lattice_weissenberg = reference_shear_rate_1_s * (n.collision.tau - 0.5) * n.dt_s;
     numerics.derived("lattice_weissenberg", n.lattice_weissenberg);
   }
-  const double nu_lu = (n.collision.tau - 0.5) / 3.0;
+  double nu_lu = (n.collision.tau - 0.5) / 3.0;
+  if (n.viscosity_ratio != 1.0) {
+    n.inner_collision = n.collision;
+    n.inner_collision.tau = 0.5 + n.viscosity_ratio * (n.collision.tau - 0.5);
+    numerics.derived("tau_cytoplasm", n.inner_collision.tau);
+    // The explicit membrane update feels the viscous drag of both sides; the stiffer one sets the mass (a guess, not
+    // measured: the factor was calibrated at ratio 1).
+    nu_lu = std::max(nu_lu, (n.inner_collision.tau - 0.5) / 3.0);
+  }
   if (n.membrane_mass_factor == 0.0) {
     n.membrane_mass_factor = std::max(1.0, kMassFactorPerViscosityStep * nu_lu * static_cast<double>(n.membrane_every));
   }

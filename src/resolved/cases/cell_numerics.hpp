@@ -26,6 +26,10 @@ struct CellNumerics {
   bool drive_on_enclosed_volume = true;    // add the body-force drive's share the sampled tractions miss (CouplingSettings)
   MembraneForce membrane_force = MembraneForce::fluid_stress;   // sampled stress, or minus the IBM force (coupled_cell.hpp)
   Streaming streaming = Streaming::two_buffer;   // lattice storage: two buffers, or the in-place AA pattern (same results)
+  /// Cytoplasm over plasma dynamic viscosity, from [cell] cytoplasm_viscosity_Pa_s (cytoplasm_viscosity.hpp); 1: one
+  /// fluid inside and outside the cell, the lattice has one phase (bit for bit the runs before the cytoplasm).
+  double viscosity_ratio = 1.0;
+  CollisionParams inner_collision;    // derived when viscosity_ratio != 1: tau_in = 1/2 + ratio (tau - 1/2)
   double dt_s = 0.0;                  // derived
   double lattice_weissenberg = 0.0;   // derived: gamma_ref (tau - 1/2) dt, the lattice fluid's memory against the flow's
                                       // time (0 where the case gives no reference shear rate)
@@ -36,7 +40,8 @@ struct CellNumerics {
 [[nodiscard]] CellNumerics read_cell_numerics(hs::common::ConfigSection numerics);
 
 /// Derives dt = lattice_velocity dx / u_ref, tau = 1/2 + 3 nu dt / dx^2; if tau > max_tau, dt (and the lattice
-/// velocity) are lowered so tau = max_tau. With a reference shear rate gamma_ref > 0 (the plate cases) tau is also
+/// velocity) are lowered so tau = max_tau. With a viscosity ratio > 1 the cap holds for the cytoplasm's tau, the
+/// largest in the lattice: tau - 1/2 <= (max_tau - 1/2) / ratio outside. With a reference shear rate gamma_ref > 0 (the plate cases) tau is also
 /// capped so that the lattice Weissenberg number gamma_ref (tau - 1/2) dt <= max_lattice_weissenberg: the lattice
 /// fluid's stress relaxes over (tau - 1/2) dt, and that memory drove a cell in shear to the wall
 /// (docs/resolved-coupling.md, "The lattice fluid's memory"). The membrane mass factor defaults to

@@ -88,10 +88,24 @@ void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const Membran
                                                           .lattice_origin_m = s.origin_m,
                                                           .drive_on_enclosed_volume = n.drive_on_enclosed_volume,
                                                           .add_forces_N = std::move(add_forces_N)});
+  if (n.viscosity_ratio != 1.0) {
+    s.lattice->set_inner_collision(n.inner_collision);
+    s.cytoplasm = std::make_unique<CytoplasmPhase>(*s.lattice, s.origin_m, s.units.dx_m());
+    update_cytoplasm(s);
+  }
+}
+
+void update_cytoplasm(CellSimulation& s) {
+  if (s.cytoplasm) s.cytoplasm->update(s.cell->marker_positions_m(), s.membrane->triangles());
 }
 
 void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s) {
   loop.add("membrane_solve", [&s] { s.cell->membrane_solve(); });
+  if (s.cytoplasm) {
+    loop.add("cytoplasm_indicator", [&s] {
+      if (s.cell->interval_starts()) update_cytoplasm(s);
+    });
+  }
   loop.add("ibm_forcing", [&s] { s.cell->ibm_forcing(); });
   loop.add("lbm_stream_collide", [&s] { s.lattice->stream_collide(); });
   loop.add("halo_exchange", [&s] { s.lattice->exchange_halos(); });
@@ -205,6 +219,7 @@ long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const
     for (std::size_t k = 0; k + 2 < r.size(); k += 3) st.reaction_lu.push_back({r[k], r[k + 1], r[k + 2]});
   }
   s.cell->restore(st);
+  update_cytoplasm(s);
   const auto& series = cp.doubles("series");
   samples.assign(series.begin(), series.end());
   frame = cp.meta()["frame"].get<int>();

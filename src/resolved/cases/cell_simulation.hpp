@@ -20,6 +20,7 @@
 #include "common/units/unit_converter.hpp"
 #include "resolved/cases/cell_numerics.hpp"
 #include "resolved/ibm/coupled_cell.hpp"
+#include "resolved/ibm/cytoplasm_phase.hpp"
 #include "resolved/lbm/fluid_lattice.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
 #include "resolved/membrane/npfem_solver.hpp"
@@ -35,13 +36,15 @@ struct CellSimulation {
   std::unique_ptr<FluidLattice> lattice;
   std::unique_ptr<NpfemSolver> membrane;
   std::unique_ptr<CoupledCell> cell;
+  std::unique_ptr<CytoplasmPhase> cytoplasm;   // the cytoplasm's own viscosity (viscosity ratio != 1), else null
 };
 
 /// The generated (or read) RBC mesh with its disc axis (generated along z) turned to `axis` (0 x, 1 y, 2 z).
 [[nodiscard]] TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis);
 
 /// Creates the npFEM solver (material density scaled by n.membrane_mass_factor, step membrane_every dt) with its
-/// centroid at `centroid_m`, then the CoupledCell (median filter on, as Palabos-npFEM). `add_forces_N`, if given, adds
+/// centroid at `centroid_m`, then the CoupledCell (median filter on, as Palabos-npFEM). With n.viscosity_ratio != 1
+/// the lattice (initialised) gets the cytoplasm's relaxation, n.inner_collision, on the nodes the membrane encloses. `add_forces_N`, if given, adds
 /// forces to the fluid traction before each membrane step (CouplingSettings::add_forces_N).
 void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const MembraneConfig& membrane, const CellNumerics& n,
                       const common::Vec3& centroid_m,
@@ -62,7 +65,12 @@ void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const Membran
                                                          const std::array<int, 3>& nodes, double dx_m,
                                                          const std::array<bool, 3>& periodic);
 
+/// Marks the nodes the cell's markers enclose as the cytoplasm (no-op without one). All ranks call.
+void update_cytoplasm(CellSimulation& s);
+
 /// The coupled stages of one lattice step, in Palabos-npFEM order (resolved-methods.md 2.3), named for the timers.
+/// With a cytoplasm, `cytoplasm_indicator` follows membrane_solve: at the start of each membrane interval it marks the
+/// nodes the markers enclose (they move less than a node per interval; updating then keeps resumed runs bit for bit).
 
 void add_coupled_stages(common::TimeLoop& loop, CellSimulation& s);
 

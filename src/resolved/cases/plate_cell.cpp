@@ -38,7 +38,7 @@ std::unique_ptr<PlateCellRun> build(const PlateCellConfig& c) {
   auto run = std::make_unique<PlateCellRun>(PlateCellRun{
       {.units = common::UnitConverter(common::LatticeScales{.dx_m = n.dx_m, .dt_s = n.dt_s, .rho_kg_m3 = c.density_kg_m3}),
        .nodes = plate_nodes(c),
-       .origin_m = {0.0, 0.5 * n.dx_m, 0.0}, .lattice = nullptr, .membrane = nullptr, .cell = nullptr},
+       .origin_m = {0.0, 0.5 * n.dx_m, 0.0}, .lattice = nullptr, .membrane = nullptr, .cell = nullptr, .cytoplasm = nullptr},
       c, 0});
   auto& r = *run;
   const double h_m = r.nodes[1] * n.dx_m;
@@ -120,11 +120,13 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   PlateCellRun& r = *run;
   if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
   ctx.log().info("{}: Re = {:.4g}, shear rate {:.4g} 1/s, U_max {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
-                 "tau = {:.3f}, lattice velocity {:.4g}, lattice Weissenberg {:.3g}, membrane mass factor {:.3g}", type,
+                 "tau = {:.3f}, lattice velocity {:.4g}, lattice Weissenberg {:.3g}, membrane mass factor {:.3g}, "
+                 "viscosity ratio {:.4g} (cytoplasm tau {:.3f})", type,
                  c.reynolds,
                  c.shear_rate_1_s, c.u_max_m_s, r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m, c.numerics.dt_s,
                  c.numerics.collision.tau, c.numerics.lattice_velocity, c.numerics.lattice_weissenberg,
-                 c.numerics.membrane_mass_factor);
+                 c.numerics.membrane_mass_factor, c.numerics.viscosity_ratio,
+                 c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.tau : c.numerics.collision.tau);
   if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
   PlateCellSeries series(c);
   int frame = 0;
@@ -166,6 +168,9 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                          {"dt_s", c.numerics.dt_s},
                          {"membrane_step_s", static_cast<double>(c.numerics.membrane_every) * c.numerics.dt_s},
                          {"tau", c.numerics.collision.tau},
+                         {"viscosity_ratio", c.numerics.viscosity_ratio},   // cytoplasm / plasma; 1: one fluid
+                         {"tau_cytoplasm", c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.tau : c.numerics.collision.tau},
+                         {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
                          {"lattice_weissenberg", c.numerics.lattice_weissenberg},   // gamma (tau - 1/2) dt
                          {"membrane_mass_factor", c.numerics.membrane_mass_factor},
                          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step

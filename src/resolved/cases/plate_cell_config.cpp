@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "common/fluid_properties.hpp"
+#include "resolved/cases/cytoplasm_viscosity.hpp"
 #include "resolved/measure/flow_mode.hpp"
 
 namespace hs::resolved {
@@ -89,16 +90,19 @@ PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bo
   c.initial_height = cell.number_in_or("initial_height", 0.05, 0.95, 0.5);
   const std::string axis = cell.one_of_or("disc_axis", {"x", "y", "z"}, flow == PlateFlow::shear ? "y" : "z");
   c.disc_axis = axis == "x" ? 0 : (axis == "y" ? 1 : 2);
+  const double viscosity_ratio = read_cytoplasm_viscosity_ratio(cell, c.density_kg_m3 * c.kinematic_viscosity_m2_s);
   auto membrane = root.section_or_empty("membrane");
   c.membrane = parse_membrane_config(membrane);
   read_flow(root.section("flow"), c);
   auto numerics = root.section("numerics");
   c.numerics = read_cell_numerics(numerics);
+  c.numerics.viscosity_ratio = viscosity_ratio;
   read_run(root.section("run"), root.section_or_empty("output"), c);
   read_check(root.section_or_empty("check"), c);
   file.finish();
   // The wall shear rate (simple shear: gamma everywhere; plane Poiseuille: 4 U_max / H) bounds the lattice's memory.
   derive_cell_numerics(c.numerics, c.kinematic_viscosity_m2_s, c.u_max_m_s, numerics, c.shear_rate_1_s);
+  check_cytoplasm_relaxation(cell, c.numerics);
   const double dt = c.numerics.dt_s;
   const long k = c.numerics.membrane_every;   // samples and checkpoints fall on membrane-step boundaries
   c.sample_every_steps = std::max(k, k * std::lround(c.sample_every_s / (dt * static_cast<double>(k))));

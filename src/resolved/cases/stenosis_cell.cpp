@@ -62,7 +62,7 @@ std::unique_ptr<StenosisRun> build(const StenosisCellConfig& c, double drive_m_s
   const StenosisGrid grid = stenosis_grid(c);
   auto run = std::make_unique<StenosisRun>(StenosisRun{
       {.units = common::UnitConverter(common::LatticeScales{.dx_m = n.dx_m, .dt_s = n.dt_s, .rho_kg_m3 = c.density_kg_m3}),
-       .nodes = grid.nodes, .origin_m = grid.origin_m, .lattice = nullptr, .membrane = nullptr, .cell = nullptr},
+       .nodes = grid.nodes, .origin_m = grid.origin_m, .lattice = nullptr, .membrane = nullptr, .cell = nullptr, .cytoplasm = nullptr},
       c, common::StenosedChannel(c.channel()), drive_m_s2, nullptr});
   auto& r = *run;
   r.lattice = make_stenosis_lattice(c, grid);   // at rest; the drive is ramped up (drive_lu)

@@ -39,13 +39,14 @@ CellNumerics numerics_of(const TubeCellConfig& c) {
   return {.dx_m = c.dx_m, .lattice_velocity = c.lattice_velocity, .max_tau = c.max_tau, .collision = c.collision,
           .wall = c.wall, .membrane_every = c.membrane_every, .membrane_mass_factor = c.membrane_mass_factor,
           .ibm = c.ibm, .traction_area = c.traction_area, .drive_on_enclosed_volume = c.drive_on_enclosed_volume,
-          .membrane_force = c.membrane_force, .dt_s = c.dt_s};
+          .membrane_force = c.membrane_force, .viscosity_ratio = c.viscosity_ratio, .inner_collision = c.inner_collision,
+          .dt_s = c.dt_s};
 }
 
 std::unique_ptr<TubeCellRun> build(const TubeCellConfig& c) {
   auto run = std::make_unique<TubeCellRun>(TubeCellRun{
       {.units = common::UnitConverter(common::LatticeScales{.dx_m = c.dx_m, .dt_s = c.dt_s, .rho_kg_m3 = c.density_kg_m3}),
-       .nodes = lattice_nodes(c), .origin_m = {}, .lattice = nullptr, .membrane = nullptr, .cell = nullptr},
+       .nodes = lattice_nodes(c), .origin_m = {}, .lattice = nullptr, .membrane = nullptr, .cell = nullptr, .cytoplasm = nullptr},
       c});
   auto& r = *run;
   const double centre_lu = 0.5 * (r.nodes[0] - 1);
@@ -131,10 +132,11 @@ int run_tube_cell(const common::CaseRequest& request) {
   TubeCellRun& r = *run;
   if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
   ctx.log().info("tube-cell ({}): r* = {}, Re = {}, U_max = {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
-                 "tau = {:.3f}, peak lattice velocity {:.4g}, membrane every {} steps",
+                 "tau = {:.3f}, peak lattice velocity {:.4g}, membrane every {} steps, viscosity ratio {:.4g} "
+                 "(cytoplasm tau {:.3f})",
                  c.setup == TubeCellSetup::drag ? "drag" : "lift", c.radial_position, c.reynolds, c.u_max_m_s,
                  r.nodes[0], r.nodes[1], r.nodes[2], c.dx_m, c.dt_s, c.collision.tau, c.lattice_velocity,
-                 c.membrane_every);
+                 c.membrane_every, c.viscosity_ratio, c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau);
   if (const std::string w = kernel_width_warning(numerics_of(c).ibm.kernel, c.dx_m); !w.empty()) ctx.log().warning("{}", w);
   TubeCellSeries series(c, r.membrane->rest_volume_m3());
   int frame = 0;
@@ -199,6 +201,9 @@ int run_tube_cell(const common::CaseRequest& request) {
   summary["numerics"] = {{"dx_m", c.dx_m},
                          {"dt_s", c.dt_s},
                          {"tau", c.collision.tau},
+                         {"viscosity_ratio", c.viscosity_ratio},   // cytoplasm / plasma; 1: one fluid
+                         {"tau_cytoplasm", c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau},
+                         {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
                          {"membrane_mass_factor", c.membrane_mass_factor},
                          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
                          {"spin_up_steps", c.spin_up_steps},

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Strict reading of the tube-cell case file and the choice of lattice units from the Mach limit.
 #include "resolved/cases/tube_cell_config.hpp"
+
+#include "resolved/cases/cytoplasm_viscosity.hpp"
 #include "resolved/cases/cell_numerics.hpp"
 #include "common/dimensionless_groups.hpp"
 #include "common/fluid_properties.hpp"
@@ -29,6 +31,8 @@ void apply_numerics(const CellNumerics& n, TubeCellConfig& c) {
   c.lattice_velocity = n.lattice_velocity;
   c.max_tau = n.max_tau;
   c.collision = n.collision;
+  c.viscosity_ratio = n.viscosity_ratio;
+  c.inner_collision = n.inner_collision;
   c.wall = n.wall;
   c.membrane_every = n.membrane_every;
   c.membrane_mass_factor = n.membrane_mass_factor;
@@ -81,13 +85,16 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   auto cell = root.section("cell");
   c.setup = cell.one_of("setup", {"drag", "lift"}) == "drag" ? TubeCellSetup::drag : TubeCellSetup::lift;
   c.radial_position = cell.number_in("radial_position", 0.0, 0.9);
+  const double viscosity_ratio = read_cytoplasm_viscosity_ratio(cell, c.density_kg_m3 * c.kinematic_viscosity_m2_s);
   auto membrane = root.section_or_empty("membrane");
   c.membrane = parse_membrane_config(membrane);
   CellNumerics numerics = read_cell_numerics(root.section("numerics"));
+  numerics.viscosity_ratio = viscosity_ratio;
   read_run(root.section("run"), root.section_or_empty("output"), c);
   file.finish();
   c.u_max_m_s = c.reynolds * c.kinematic_viscosity_m2_s / (2.0 * c.radius_m);
   derive_cell_numerics(numerics, c.kinematic_viscosity_m2_s, c.u_max_m_s, root.section("numerics"));
+  check_cytoplasm_relaxation(cell, numerics);
   apply_numerics(numerics, c);
   // Samples (and checkpoints) fall on membrane-step boundaries, where the coupling state is just positions/velocities.
   const long k = c.membrane_every;

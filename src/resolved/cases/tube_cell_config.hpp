@@ -30,6 +30,8 @@ struct TubeCellConfig {
   double lattice_velocity;          // U_max in lattice units: fixes dt (and so tau); lowered if tau > max_tau
   double max_tau;
   CollisionParams collision;        // tau derived
+  double viscosity_ratio = 1.0;     // CellNumerics: cytoplasm / plasma ([cell] cytoplasm_viscosity_Pa_s)
+  CollisionParams inner_collision;  // CellNumerics: the cytoplasm's (viscosity_ratio != 1)
   WallRule wall;
   Streaming streaming = Streaming::two_buffer;
   int membrane_every;

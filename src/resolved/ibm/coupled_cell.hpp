@@ -82,6 +82,8 @@ class CoupledCell {
 
   [[nodiscard]] const CouplingReport& report() const { return report_; }
   [[nodiscard]] long steps() const { return steps_; }
+  /// The coming lattice step starts a membrane interval (membrane_solve() steps the membrane in it).
+  [[nodiscard]] bool interval_starts() const { return steps_ % settings_.membrane_every == 0; }
   /// Marker positions in SI (unwrapped).
   [[nodiscard]] std::vector<common::Vec3> marker_positions_m() const;
   [[nodiscard]] CouplingState state() const { return {markers_.x_lu, markers_.u_lu, steps_, reaction_lu_}; }
@@ -92,7 +94,6 @@ class CoupledCell {
   /// The membrane's force this step, newtons per vertex: the sampled fluid stress, or minus the IBM force.
   [[nodiscard]] std::vector<common::Vec3> stress_force_N();
   [[nodiscard]] std::vector<common::Vec3> reaction_force_N();
-  [[nodiscard]] bool interval_starts() const { return steps_ % settings_.membrane_every == 0; }
 
   FluidLattice& lattice_;
   NpfemSolver& membrane_;

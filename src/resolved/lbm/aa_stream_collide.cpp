@@ -180,12 +180,15 @@ void aa_update_runs(const AaStreamCollideArgs& a) {
                                    edge_slots(slot, nx, true, true)};
   const bool has_field = a.force_field != nullptr;
   const TrtRates rates = trt_rates(a.omega_plus, a.omega_minus);
+  const TrtRates inner = a.inner != nullptr ? trt_rates(a.inner->omega_plus, a.inner->omega_minus) : rates;
   const auto update = [&](std::size_t r) {
     if (r + kPrefetchRuns < a.runs.size()) prefetch_run_start(a, slot, a.runs[r + kPrefetchRuns].begin);
     const FluidRun& run = a.runs[r];
     const bool odd_parts = run.odd_parts >= 0 && a.odd_parts != nullptr;
-    aa_dispatch_run<kStep>(a, rates, slot, edges, run,
-                           RunKind{.force_field = has_field, .odd_parts = odd_parts, .regularized = a.regularized});
+    const bool in = a.inner != nullptr && run.phase != 0;
+    aa_dispatch_run<kStep>(a, in ? inner : rates, slot, edges, run,
+                           RunKind{.force_field = has_field, .odd_parts = odd_parts,
+                                   .regularized = in ? a.inner->regularized : a.regularized});
   };
   if (a.layer_runs == nullptr || a.layer_runs->empty()) {
     const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());

@@ -57,6 +57,8 @@ struct AaStreamCollideArgs {
   /// (apply_wall_links_aa); the kernel has them in registers, where a separate pass would reread them from memory.
   double* odd_parts = nullptr;
   std::size_t odd_stride = 0;
+  /// As StreamCollideArgs::inner: the relaxation of the runs with FluidRun::phase == 1; nullptr: one phase.
+  const PhaseRelaxation* inner = nullptr;
 };
 
 /// One AA step on every node of `runs`, with the same collision (trt_guo_collide) as stream_collide().

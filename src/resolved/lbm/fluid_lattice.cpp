@@ -69,6 +69,9 @@ void FluidLattice::set_pressure_outlet(int axis, int side, double rho_lu) {
 void FluidLattice::enable_force_field() { force_field_.assign(3 * layout_.volume(), 0.0); }
 
 void FluidLattice::initialize(const std::function<NodeInit(const common::Vec3&)>& init) {
+  phase_.clear();
+  inner_nodes_.clear();
+  geometry_runs_.clear();
   classify_nodes();
   build_runs();
   build_open_nodes();
@@ -164,7 +167,8 @@ void FluidLattice::stream_collide() {
                                    .omega_minus = spec_.collision.omega_minus(),
                                    .regularized = spec_.collision.regularizes(),
                                    .streaming_stores = streaming_stores(),
-                                             .threaded = fluid_nodes_ >= kMinNodesForThreads});
+                                   .threaded = fluid_nodes_ >= kMinNodesForThreads,
+                                   .inner = inner_relaxation()});
   std::swap(src_, dst_);
   ++steps_;
 }
@@ -212,7 +216,8 @@ void FluidLattice::aa_stream_collide() {
                           .layer_runs = fused ? &layer_runs_ : nullptr,
                           .after_layers = fused ? &apply : nullptr,
                           .odd_parts = links_need_odd_parts_ ? link_odd_parts_.data() : nullptr,
-                          .odd_stride = odd_part_nodes_},
+                          .odd_stride = odd_part_nodes_,
+                          .inner = inner_relaxation()},
       steps_ % 2 == 0 ? AaStep::neighbour : AaStep::local);
   fused_links_done_ = true;
   ++steps_;
@@ -269,7 +274,7 @@ NodeMoments FluidLattice::moments(int x, int y, int z) const {
 }
 
 SymTensor FluidLattice::viscous_stress(int x, int y, int z) const {
-  return resolved::viscous_stress(populations(x, y, z), force(x, y, z), spec_.collision.tau);
+  return resolved::viscous_stress(populations(x, y, z), force(x, y, z), tau_at(x, y, z));
 }
 
 void FluidLattice::add_force(int x, int y, int z, const common::Vec3& f_lu) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -95,6 +96,27 @@ class FluidLattice {
   /// Collective.
   void initialize(const std::function<NodeInit(const common::Vec3&)>& init = {});
 
+  // ---- a second fluid phase: the cytoplasm (docs/resolved-coupling.md, "The cytoplasm") ----
+  /// The nodes of phase 1 relax with `inner` (its tau; model, magic and odd-rate bound as given, so TRT keeps its
+  /// Lambda per phase and tau- follows tau+). Without this call the lattice has one phase and its kernels run the
+  /// single-phase code bit for bit. Phase 1 stays empty until set_inner_nodes().
+  void set_inner_collision(const CollisionParams& inner);
+  /// Makes exactly `nodes` (local linear indices, layout().index(); nodes that are not fluid are skipped) the phase-1
+  /// nodes and splits the runs where the phase changes, so that each run relaxes with one set of rates.
+  /// pre: initialize() and set_inner_collision() done. Not collective: each rank marks its own nodes.
+  void set_inner_nodes(std::span<const std::ptrdiff_t> nodes);
+  [[nodiscard]] bool two_phases() const { return inner_collision_.has_value(); }
+  [[nodiscard]] const CollisionParams& inner_collision() const { return inner_collision_ ? *inner_collision_ : spec_.collision; }
+  /// Phase-1 nodes of this rank.
+  [[nodiscard]] std::size_t inner_node_count() const { return inner_nodes_.size(); }
+  [[nodiscard]] bool is_inner(int x, int y, int z) const {
+    return !phase_.empty() && phase_[static_cast<std::size_t>(layout_.index(x, y, z))] != 0;
+  }
+  /// Relaxation time tau+ of a local interior node: its phase's.
+  [[nodiscard]] double tau_at(int x, int y, int z) const {
+    return is_inner(x, y, z) ? inner_collision_->tau : spec_.collision.tau;
+  }
+
   // ---- time stepping ----
   /// One step = stream_collide(); exchange_halos(); apply_boundaries(). Collective.
   void step();
@@ -178,6 +200,10 @@ class FluidLattice {
   void complete_state();
   [[nodiscard]] std::array<int, 3> global_of(std::ptrdiff_t index) const;
   [[nodiscard]] std::ptrdiff_t index(int x, int y, int z) const { return layout_.index(x, y, z); }
+  /// AA: layer_runs_ from runs_ (the runs are in z-major order).
+  void index_layer_runs();
+  /// The kernels' `inner` argument: nullptr with one phase.
+  [[nodiscard]] const PhaseRelaxation* inner_relaxation() const { return inner_collision_ ? &inner_relaxation_ : nullptr; }
 
   LatticeSpec spec_;
   std::unique_ptr<common::CartesianDecomposition> decomposition_;
@@ -217,6 +243,13 @@ class FluidLattice {
   std::array<std::array<std::vector<int>, 2>, 3> halo_components_;
   bool reduced_halo_ = true;
   long steps_ = 0;
+  // Two phases (set_inner_collision): the inner relaxation, the phase of every node (1 = inner; empty until
+  // set_inner_nodes), the inner nodes, and the runs as initialize() built them, before the split by phase.
+  std::optional<CollisionParams> inner_collision_;
+  PhaseRelaxation inner_relaxation_{};
+  std::vector<std::uint8_t> phase_;
+  std::vector<std::ptrdiff_t> inner_nodes_;
+  std::vector<FluidRun> geometry_runs_;
 };
 
 }  // namespace hs::resolved

@@ -136,10 +136,15 @@ void FluidLattice::build_aa_layers() {
   std::stable_sort(links_.begin(), split, [&](const WallLink& l, const WallLink& m) { return group(l) < group(m); });
   const auto nz = static_cast<std::size_t>(layout_.n[2]);
   layer_links_.assign(2 * nz + 1, 0);
-  layer_runs_.assign(nz + 1, 0);
   for (std::size_t k = 0; k < fused_links_; ++k) ++layer_links_[group(links_[k]) + 1];
-  for (const FluidRun& r : runs_) ++layer_runs_[static_cast<std::size_t>(layout_.coords(r.begin)[2]) + 1];
   for (std::size_t g = 0; g < 2 * nz; ++g) layer_links_[g + 1] += layer_links_[g];
+  index_layer_runs();
+}
+
+void FluidLattice::index_layer_runs() {
+  const auto nz = static_cast<std::size_t>(layout_.n[2]);
+  layer_runs_.assign(nz + 1, 0);
+  for (const FluidRun& r : runs_) ++layer_runs_[static_cast<std::size_t>(layout_.coords(r.begin)[2]) + 1];
   for (std::size_t z = 0; z < nz; ++z) layer_runs_[z + 1] += layer_runs_[z];
 }
 

@@ -83,22 +83,25 @@ void stream_collide(const StreamCollideArgs& a) {
   const auto runs = static_cast<std::ptrdiff_t>(a.runs.size());
   const bool has_field = a.force_field != nullptr;
   const TrtRates bulk = trt_rates(a.omega_plus, a.omega_minus);
+  const TrtRates inner = a.inner != nullptr ? trt_rates(a.inner->omega_plus, a.inner->omega_minus) : bulk;
 #pragma omp parallel if (a.threaded)
   {
 #pragma omp for schedule(static)
     for (std::ptrdiff_t r = 0; r < runs; ++r) {
       const FluidRun run = a.runs[static_cast<std::size_t>(r)];
       const std::ptrdiff_t end = run.begin + run.length;
-      if (a.regularized) {
+      const bool in = a.inner != nullptr && run.phase != 0;
+      const TrtRates& rates = in ? inner : bulk;
+      if (in ? a.inner->regularized : a.regularized) {
         if (has_field) {
-          update_run<true, true>(a, bulk, pull, out, run.begin, end);
+          update_run<true, true>(a, rates, pull, out, run.begin, end);
         } else {
-          update_run<false, true>(a, bulk, pull, out, run.begin, end);
+          update_run<false, true>(a, rates, pull, out, run.begin, end);
         }
       } else if (has_field) {
-        update_run<true, false>(a, bulk, pull, out, run.begin, end);
+        update_run<true, false>(a, rates, pull, out, run.begin, end);
       } else {
-        update_run<false, false>(a, bulk, pull, out, run.begin, end);
+        update_run<false, false>(a, rates, pull, out, run.begin, end);
       }
     }
 #if defined(__AVX512F__)

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 #include "common/vec3.hpp"
@@ -18,6 +19,17 @@ struct FluidRun {
   /// AA: >= 0 when the kernel keeps the pre-collision odd parts of these nodes for their wall links: node begin + k
   /// is entry odd_parts + k of AaStreamCollideArgs::odd_parts. -1: none.
   std::ptrdiff_t odd_parts = -1;
+  /// 0: the bulk fluid; 1: the inner phase (the cytoplasm inside a cell), which relaxes with the kernel's `inner`
+  /// rates. A run holds nodes of one phase only (FluidLattice splits the runs where the phase changes).
+  std::uint8_t phase = 0;
+};
+
+/// The relaxation of one fluid phase: the rates of trt_guo_collide and whether the regularised kernel runs
+/// (CollisionParams::omega_plus, omega_minus, regularizes).
+struct PhaseRelaxation {
+  double omega_plus;
+  double omega_minus;
+  bool regularized;
 };
 
 struct StreamCollideArgs {
@@ -34,9 +46,12 @@ struct StreamCollideArgs {
   bool regularized;                              // regularised collision (regularized_guo_collision.hpp)
   bool streaming_stores;                         // write dst with non-temporal stores (arrays far beyond cache)
   bool threaded;                                 // share the runs among OpenMP threads
+  /// Runs with FluidRun::phase == 1 relax with these instead (a viscosity of their own); nullptr: every run relaxes
+  /// with omega_plus, omega_minus, regularized, and the kernel is the single-phase one bit for bit.
+  const PhaseRelaxation* inner = nullptr;
 };
 
-/// One lattice Boltzmann step on every node of `runs`:
+/// One lattice Boltzmann step on every node of `runs` (with `inner`, the runs of phase 1 with their own rates):
 ///   pull:    f_i(x) = f*_i(x - c_i)                                  (src)
 ///   moments: rho = sum f_i,  u = (sum f_i c_i + F/2) / rho           (Guo et al. 2002)
 ///   TRT:     f*_i = f_i - w+ (f+_i - f+eq_i) - w- (f-_i - f-eq_i) + (1 - w+/2) S+_i + (1 - w-/2) S-_i

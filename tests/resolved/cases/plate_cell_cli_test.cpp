@@ -131,4 +131,10 @@ TEST(ShearCli, ReactionCouplingResumesBitForBit) {
   expect_resume_repeats_the_series("shear/tank-treading-reaction", "max_jeffery_periods = 4 ", "0.00081", "0.00162");
 }
 
+TEST(ShearCli, CytoplasmResumesBitForBit) {
+  // The cytoplasm's nodes are a function of the markers (restored), marked at each membrane interval's start, and
+  // checkpoints fall on those starts. Samples every 118 steps of 1.7083 us: 4 and 8 of them.
+  expect_resume_repeats_the_series("shear/tank-treading-cytoplasm", "max_jeffery_periods = 4 ", "0.000806", "0.0016126");
+}
+
 }  // namespace

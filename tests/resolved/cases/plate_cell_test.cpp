@@ -128,6 +128,51 @@ TEST(PlateCellConfig, TheWeissenbergBoundIsReadAndOnlyLowersTau) {
   EXPECT_THROW(read(bad, PlateFlow::shear), common::ConfigError);
 }
 
+TEST(PlateCellConfig, WithoutACytoplasmViscosityTheCellHoldsPlasma) {
+  // Absent, or the plasma's own mu = rho nu = 1.025e-3 Pa s: ratio exactly 1, and the lattice keeps one phase.
+  const PlateCellConfig absent = read(shipped("shear/tank-treading"), PlateFlow::shear);
+  EXPECT_EQ(absent.numerics.viscosity_ratio, 1.0);
+  const std::string same = with(shipped("shear/tank-treading"), "initial_height = 0.5 ",
+                                "cytoplasm_viscosity_Pa_s = 1.025e-3\ninitial_height = 0.5 ");
+  const PlateCellConfig c = read(same, PlateFlow::shear);
+  EXPECT_EQ(c.numerics.viscosity_ratio, 1.0);
+  EXPECT_EQ(c.numerics.collision.tau, absent.numerics.collision.tau);
+}
+
+TEST(PlateCellConfig, HealthyCytoplasmGivesTheInnerTauWithinTheCap) {
+  // 6 mPa s against 1.025 mPa s: ratio 5.854. membrane-viscosity runs at its Weissenberg tau 5.40, and the cytoplasm at
+  // 1/2 + 5.854 (5.40 - 1/2) = 29.2, under max_tau 30.5: tau outside unchanged.
+  const std::string key = "cytoplasm_viscosity_Pa_s = 6.0e-3\n";
+  const PlateCellConfig plain = read(shipped("shear/membrane-viscosity"), PlateFlow::shear);
+  const PlateCellConfig c = read(with(shipped("shear/membrane-viscosity"), "[cell]\n", "[cell]\n" + key), PlateFlow::shear);
+  const double ratio = 6.0e-3 / (1025.0 * 1.0e-6);
+  EXPECT_NEAR(c.numerics.viscosity_ratio, ratio, 1e-12);
+  EXPECT_EQ(c.numerics.collision.tau, plain.numerics.collision.tau);
+  EXPECT_NEAR(c.numerics.inner_collision.tau, 0.5 + ratio * (plain.numerics.collision.tau - 0.5), 1e-12);
+  // The stiff case runs at tau 25.5: the cap 30.5 now holds inside, tau_out - 1/2 = 30 / ratio (more steps).
+  const PlateCellConfig stiff = read(with(shipped("shear"), "[cell]\n", "[cell]\n" + key), PlateFlow::shear);
+  EXPECT_NEAR(stiff.numerics.collision.tau, 0.5 + 30.0 / ratio, 1e-12);
+  EXPECT_NEAR(stiff.numerics.inner_collision.tau, 30.5, 1e-12);
+  EXPECT_EQ(stiff.numerics.inner_collision.model, stiff.numerics.collision.model);
+}
+
+TEST(PlateCellConfig, BadCytoplasmViscositiesAreRefusedByName) {
+  for (const std::string value : {"0.0", "-6e-3", "2.0", "\"healthy\""}) {
+    const std::string toml =
+        with(shipped("shear/membrane-viscosity"), "[cell]\n", "[cell]\ncytoplasm_viscosity_Pa_s = " + value + "\n");
+    try {
+      (void)read(toml, PlateFlow::shear);
+      ADD_FAILURE() << value << " accepted";
+    } catch (const common::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("cytoplasm_viscosity_Pa_s"), std::string::npos) << e.what();
+    }
+  }
+  // 1e-5 Pa s is in range, but puts the cytoplasm's tau at 1/2 + 0.00976 x 4.90 = 0.548 < 0.55.
+  const std::string thin =
+      with(shipped("shear/membrane-viscosity"), "[cell]\n", "[cell]\ncytoplasm_viscosity_Pa_s = 1.0e-5\n");
+  EXPECT_THROW((void)read(thin, PlateFlow::shear), common::ConfigError);
+}
+
 TEST(PlateCellConfig, ReleaseTooCloseToAWallIsRefused) {
   // y0 = 0.1 H = 2.4 um < a = 3.91 um: the rim would cross the wall.
   const std::string toml = with(shipped("migration"), "initial_height = 0.3", "initial_height = 0.1");

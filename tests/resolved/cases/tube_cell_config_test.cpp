@@ -63,6 +63,27 @@ TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
   EXPECT_EQ(c.spin_up_steps, 500);   // 4 R^2 / nu = 500 steps > 10 tau = 155
 }
 
+TEST(TubeCellConfig, TheCytoplasmsTauIsTheOneTheCapBounds) {
+  // Without the key: one fluid, the campaign's numbers above.
+  EXPECT_EQ(read_drag_case(0.5).viscosity_ratio, 1.0);
+  // 6 mPa s against 1.025 mPa s: ratio 5.854. At Re 0.5 tau would be 12.5 outside and 1/2 + 5.854 x 12 = 70.7 inside,
+  // above the case's max_tau 15.5: the cap holds inside, tau_out = 1/2 + 15 / 5.854 = 3.0625 (dt 4.1x smaller), and
+  // the membrane mass follows the cytoplasm's nu_lu = 5: 1.25 x 5 x 2.
+  std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/tube-drag/case.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string toml = text.str();
+  toml.replace(toml.find("[cell]\n"), 7, "[cell]\ncytoplasm_viscosity_Pa_s = 6.0e-3\n");
+  auto file = common::ConfigFile::parse(toml, "tube-drag/case.toml");
+  EXPECT_EQ(file->root().section("case").string("type"), "tube-cell");   // read by the case dispatcher in the app
+  const TubeCellConfig c = read_tube_cell(*file, false);
+  const double ratio = 6.0e-3 / 1.025e-3;
+  EXPECT_NEAR(c.viscosity_ratio, ratio, 1e-12);
+  EXPECT_NEAR(c.collision.tau, 0.5 + 15.0 / ratio, 1e-12);
+  EXPECT_NEAR(c.inner_collision.tau, 15.5, 1e-12);
+  EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 5.0 * 2.0, 1e-9);
+}
+
 TEST(TubeCellConfig, TheWeissenbergBoundIsRefusedWithoutAReferenceShearRate) {
   // max_lattice_weissenberg applies to the plate cases (their shear rate is the reference); the tube case refuses it
   // by name rather than ignoring it.
