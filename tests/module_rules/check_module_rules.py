@@ -19,7 +19,7 @@ from pathlib import Path
 
 # The part of regression/ that evaluating a closure needs (library hs_expression); everything else there is GP.
 EXPRESSION_HEADERS = {"regression/op.hpp", "regression/expression.hpp", "regression/infix.hpp",
-                      "regression/compiled_program.hpp", "regression/data_view.hpp"}
+                      "regression/compiled_program.hpp", "regression/data_view.hpp", "regression/dimension.hpp"}
 FIT_HEADERS = {"closures/closure_fit.hpp", "closures/fit_request.hpp", "closures/sha256.hpp"}
 
 
