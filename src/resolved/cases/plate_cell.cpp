@@ -14,6 +14,7 @@
 #include "resolved/cases/plate_cell_checks.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
+#include "resolved/measure/stresslet.hpp"
 #include "resolved/measure/cell_shape.hpp"
 
 namespace hs::resolved {
@@ -106,6 +107,9 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
   for (const auto& v : r.membrane->velocities_m_s()) s.velocity_m_s += v;
   s.velocity_m_s = s.velocity_m_s / static_cast<double>(x.size());
   s.energy = membrane_energy_snapshot(*r.membrane, time_s);
+  const auto& f = r.cell->report().fluid_forces_N;
+  if (f.size() == x.size()) s.stresslet_xy_N_m = stresslet(x, f)[0][1];   // none before the first membrane step
+  s.volume_m3 = r.membrane->volume_m3();
   return s;
 }
 

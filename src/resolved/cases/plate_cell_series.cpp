@@ -13,7 +13,8 @@ namespace hs::resolved {
 namespace {
 
 constexpr std::size_t kOldPackedFields = 10;   // checkpoints before the energy books: no header, 10 fields a sample
-constexpr std::size_t kPackedFields = 19;      // now: a header -kPackedFields (a time is never negative), then samples
+constexpr std::size_t kEnergyPackedFields = 19;   // checkpoints with the energy books, before the stresslet
+constexpr std::size_t kPackedFields = 21;      // now: a header -kPackedFields (a time is never negative), then samples
 /// Share of the series treated as start-up before averages (mean inclination, DI, tank-treading rate) are taken.
 constexpr double kTransientFraction = 0.5;
 
@@ -42,7 +43,7 @@ TumblingPeriod tumbling_period(std::span<const double> time_s, std::span<const d
 std::vector<std::string> PlateCellSeries::columns() {
   return {"time_s", "di", "inclination_rad", "marker_phase_rad", "centroid_x_m", "centroid_y_m", "centroid_z_m",
           "y_over_h", "velocity_x_m_s", "velocity_y_m_s", "membrane_fluid_power_W", "membrane_viscous_power_W",
-          "membrane_elastic_energy_J", "membrane_kinetic_energy_J", "di_gyration"};
+          "membrane_elastic_energy_J", "membrane_kinetic_energy_J", "di_gyration", "stresslet_xy_N_m"};
 }
 
 std::vector<double> PlateCellSeries::row(std::size_t i) const {
@@ -51,7 +52,8 @@ std::vector<double> PlateCellSeries::row(std::size_t i) const {
   const MembraneEnergyBalance b = membrane_energy_balance(before, s.energy);
   return {s.time_s, s.di, s.inclination_rad, s.marker_phase_rad, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z,
           s.centroid_m.y / config_.gap_m, s.velocity_m_s.x, s.velocity_m_s.y, b.mean_fluid_power_W(),
-          b.mean_viscous_power_W(), s.energy.elastic_energy_J, s.energy.kinetic_energy_J, s.di_gyration};
+          b.mean_viscous_power_W(), s.energy.elastic_energy_J, s.energy.kinetic_energy_J, s.di_gyration,
+          s.stresslet_xy_N_m};
 }
 
 std::vector<double> PlateCellSeries::pack() const {
@@ -63,15 +65,18 @@ std::vector<double> PlateCellSeries::pack() const {
     out.insert(out.end(), {s.time_s, s.di, s.inclination_rad, s.marker_phase_rad, s.centroid_m.x, s.centroid_m.y,
                            s.centroid_m.z, s.velocity_m_s.x, s.velocity_m_s.y, s.velocity_m_s.z, e.external_work_J,
                            e.viscous_dissipation_J, e.damping_dissipation_J, e.elastic_work_J, e.kinetic_step_loss_J,
-                           e.solver_residual_work_J, e.elastic_energy_J, e.kinetic_energy_J, s.di_gyration});
+                           e.solver_residual_work_J, e.elastic_energy_J, e.kinetic_energy_J, s.di_gyration,
+                           s.stresslet_xy_N_m, s.volume_m3});
   }
   return out;
 }
 
 void PlateCellSeries::unpack(std::span<const double> flat) {
   samples_.clear();
-  const bool header = !flat.empty() && flat[0] == -static_cast<double>(kPackedFields);
-  const std::size_t fields = header ? kPackedFields : kOldPackedFields;   // older: no energy books (zeros)
+  // Three layouts: now (header -21), with the energy books but no stresslet (header -19), older (no header).
+  const bool header = !flat.empty() && (flat[0] == -static_cast<double>(kPackedFields) ||
+                                        flat[0] == -static_cast<double>(kEnergyPackedFields));
+  const std::size_t fields = header ? static_cast<std::size_t>(-flat[0]) : kOldPackedFields;
   for (std::size_t k = header ? 1 : 0; k + fields <= flat.size(); k += fields) {
     const double* v = flat.data() + k;
     PlateCellSample s{.time_s = v[0], .di = v[1], .di_gyration = 0.0, .inclination_rad = v[2], .marker_phase_rad = v[3],
@@ -81,6 +86,10 @@ void PlateCellSeries::unpack(std::span<const double> flat) {
                   .damping_dissipation_J = v[12], .elastic_work_J = v[13], .kinetic_step_loss_J = v[14],
                   .solver_residual_work_J = v[15], .elastic_energy_J = v[16], .kinetic_energy_J = v[17]};
       s.di_gyration = v[18];
+    }
+    if (fields == kPackedFields) {
+      s.stresslet_xy_N_m = v[19];
+      s.volume_m3 = v[20];
     }
     samples_.push_back(s);
   }
@@ -177,6 +186,16 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["di_gyration_mean"] = sum_di_gyration / n;   // from the gyration radii: not set by single vertices (#26)
   r["tank_treading_frequency_hz"] = mode == FlowMode::tank_treading ? std::abs(rate) / (2.0 * std::numbers::pi) : 0.0;
   r["marker_rate_rad_s"] = rate;
+  // The cell's share of the suspension's shear stress: [eta] = <S_xy> / (mu gamma_dot V), so that a dilute
+  // suspension at volume fraction phi has eta_r = 1 + [eta] phi (Batchelor 1970; Einstein's 2.5 for a rigid sphere).
+  double sum_s = 0.0, sum_v = 0.0;
+  for (std::size_t i = from; i < samples_.size(); ++i) {
+    sum_s += samples_[i].stresslet_xy_N_m;
+    sum_v += samples_[i].volume_m3;
+  }
+  const double mu = config_.density_kg_m3 * config_.kinematic_viscosity_m2_s;
+  r["stresslet_xy_mean_N_m"] = sum_s / n;
+  r["intrinsic_viscosity"] = sum_v > 0.0 ? (sum_s / n) / (mu * config_.shear_rate_1_s * sum_v / n) : 0.0;
   r["period_s"] = mode == FlowMode::tumbling ? tumble.period_s
                   : (mode == FlowMode::tank_treading && rate != 0.0 ? 2.0 * std::numbers::pi / std::abs(rate) : 0.0);
   return r;

@@ -24,6 +24,8 @@ struct PlateCellSample {
   common::Vec3 centroid_m;         // unwrapped
   common::Vec3 velocity_m_s;       // mean vertex velocity
   MembraneEnergySnapshot energy;   // the membrane's energy books and stored energies (power balance)
+  double stresslet_xy_N_m = 0.0;   // S_xy of the fluid's forces on the membrane (measure/stresslet.hpp)
+  double volume_m3 = 0.0;          // the cell's enclosed volume
 };
 
 class PlateCellSeries {

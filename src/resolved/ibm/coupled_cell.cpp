@@ -86,6 +86,7 @@ void CoupledCell::membrane_solve() {
   if (!interval_starts()) return;
   std::vector<common::Vec3> f_N =
       settings_.membrane_force == MembraneForce::ibm_reaction ? reaction_force_N() : stress_force_N();
+  report_.fluid_forces_N = f_N;
   if (settings_.add_forces_N) settings_.add_forces_N(membrane_.positions_m(), f_N);
   membrane_.set_external_forces_N(f_N);
   membrane_.step();

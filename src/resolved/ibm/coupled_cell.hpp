@@ -43,6 +43,8 @@ struct CouplingSettings {
 struct CouplingReport {
   ForcingReport forcing;
   common::Vec3 fluid_force_N;      // sum of the external forces given to the membrane at its last step
+  std::vector<common::Vec3> fluid_forces_N;   // per vertex, the fluid's force on the membrane at its last step
+                                              // (before add_forces_N: no wall contact): the cell's stresslet
   double marker_drift_lu = 0.0;    // max |marker - npFEM vertex| before the snap at the end of an interval
   int vertices_without_fluid = 0;
   double sample_distance_lu = 0.0; // mean distance of the stress samples outside the membrane
