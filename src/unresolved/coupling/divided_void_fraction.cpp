@@ -58,10 +58,15 @@ void DividedMap::locate(const ParticleStore& particles) {
   const auto& pos = particles.position_m();
   const auto& markers = divided_markers();
   const BlockField<double>& ff = grid_.fluid_fractions();
+  bool lost = false;
+#pragma omp parallel for schedule(static) reduction(|| : lost) if (n > 4096)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x{pos[0][i], pos[1][i], pos[2][i]};
     const auto centre = grid_.cell_of(x);
-    if (!centre) throw hs::common::NumericalError("coupling: a particle centre left the fluid grid");
+    if (!centre) {
+      lost = true;   // thrown below: an exception must not leave an OpenMP region
+      continue;
+    }
     const std::size_t c0 = ff.index((*centre)[0], (*centre)[1], (*centre)[2]);
     for (int m = 0; m < kMarkersPerSphere; ++m) {
       const auto at = grid_.cell_of(x + particles.radius_m()[i] * markers[static_cast<std::size_t>(m)]);
@@ -70,15 +75,27 @@ void DividedMap::locate(const ParticleStore& particles) {
       cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)] = c;
     }
   }
+  if (lost) throw hs::common::NumericalError("coupling: a particle centre left the fluid grid");
+  // Counting sort by cell, stable in the marker index.
+  const std::size_t n_cells = ff.data().size();
+  start_.assign(n_cells + 1, 0);
+  for (const std::size_t c : cells_) ++start_[c + 1];
+  occupied_.clear();
+  for (std::size_t c = 0; c < n_cells; ++c) {
+    if (start_[c + 1] > 0) occupied_.push_back(c);
+    start_[c + 1] += start_[c];
+  }
+  markers_.resize(cells_.size());
+  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+  for (std::size_t k = 0; k < cells_.size(); ++k) markers_[next[cells_[k]]++] = static_cast<std::uint32_t>(k);
 }
 
 double DividedMap::void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps) const {
   BlockField<double> solid(grid_.cells(), 0.0);
-  for (std::size_t i = 0; i < size(); ++i) {
-    const double r = particles.radius_m()[i];
-    const double v_marker = 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
-    for (int m = 0; m < kMarkersPerSphere; ++m) solid[cell(i, m)] += v_marker;
-  }
+  for_each_cell([&](std::size_t c, std::size_t k) {
+    const double r = particles.radius_m()[k / kMarkersPerSphere];
+    solid[c] += 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
+  });
   double lost_m3 = 0.0;
   const BlockField<double>& ff = grid_.fluid_fractions();
   const auto& n = grid_.cells();
