@@ -32,6 +32,9 @@ namespace {
 using namespace hs::unresolved;
 
 constexpr int open_tube_repetitions = 5;   // timed CFD steps per open-tube size (median)
+// Set to a comma-separated list of RBC counts (e.g. "100000"): only those periodic sizes, no open tube (profiling
+// one size during development; bench/results/README.md).
+constexpr const char* periodic_sizes_env = "HS_BENCH_CFDDEM_SIZES";
 
 struct Measured {
   double s_per_cfd_step;
@@ -135,7 +138,16 @@ int run_cfddem_bench(const hs::common::TaskOptions& options) {
     if (options.json_file) hs::common::write_json(*options.json_file, m);
     return 0;
   }
-  const std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
+  std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
+  const char* only = std::getenv(periodic_sizes_env);   // development: these periodic sizes only, no open tube
+  if (only != nullptr) {
+    sizes.clear();
+    for (std::string rest = only; !rest.empty();) {
+      const std::size_t comma = rest.find(',');
+      sizes.push_back(std::stol(rest.substr(0, comma)));
+      rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+    }
+  }
   nlohmann::json j;
   fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s\n");
   for (const long n : sizes) {
@@ -152,7 +164,7 @@ int run_cfddem_bench(const hs::common::TaskOptions& options) {
     j[key + "_amg_setups"] = m.amg_setups;
     j[key + "_amg_reuses"] = m.amg_reuses;
   }
-  j["open_tube"] = open_tube_sizes(options.quick);
+  if (only == nullptr) j["open_tube"] = open_tube_sizes(options.quick);
   hs::common::CheckList checks;
   const auto measured = [&j](const char* key) { return j.contains(key) ? std::optional<double>(j[key].get<double>()) : std::nullopt; };
   expect_at_most(checks, options, "cfddem_1e6_s_per_cfd_step", measured("cfddem_1e6_s_per_cfd_step"), 2.0,

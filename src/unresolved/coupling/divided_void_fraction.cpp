@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <omp.h>
+
 #include "common/errors.hpp"
 
 namespace hs::unresolved {
@@ -76,18 +78,44 @@ void DividedMap::locate(const ParticleStore& particles) {
     }
   }
   if (lost) throw hs::common::NumericalError("coupling: a particle centre left the fluid grid");
-  // Counting sort by cell, stable in the marker index.
-  const std::size_t n_cells = ff.data().size();
+  sort_by_cell(ff.data().size());
+}
+
+void DividedMap::sort_by_cell(std::size_t n_cells) {
+  // Counting sort, stable in the marker index: each thread counts a contiguous range of markers; a cell's markers
+  // from thread 0 come first, then thread 1's, ..., so the order is ascending k at any thread count.
+  const std::size_t n_markers = cells_.size();
+  const int n_threads = n_markers > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
+  std::vector<std::vector<std::uint32_t>> count(static_cast<std::size_t>(n_threads));
   start_.assign(n_cells + 1, 0);
-  for (const std::size_t c : cells_) ++start_[c + 1];
+  markers_.resize(n_markers);
+#pragma omp parallel num_threads(n_threads)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t lo = n_markers * t / count.size(), hi = n_markers * (t + 1) / count.size();
+    std::vector<std::uint32_t>& mine = count[t];
+    mine.assign(n_cells, 0);
+    for (std::size_t k = lo; k < hi; ++k) ++mine[cells_[k]];
+#pragma omp barrier
+#pragma omp single
+    {
+      std::uint32_t total = 0;
+      for (std::size_t c = 0; c < n_cells; ++c) {
+        start_[c] = total;
+        for (auto& per_thread : count) {   // becomes each thread's first slot in cell c
+          const std::uint32_t n_here = per_thread[c];
+          per_thread[c] = total;
+          total += n_here;
+        }
+      }
+      start_[n_cells] = total;
+    }
+    for (std::size_t k = lo; k < hi; ++k) markers_[mine[cells_[k]]++] = static_cast<std::uint32_t>(k);
+  }
   occupied_.clear();
   for (std::size_t c = 0; c < n_cells; ++c) {
-    if (start_[c + 1] > 0) occupied_.push_back(c);
-    start_[c + 1] += start_[c];
+    if (start_[c + 1] > start_[c]) occupied_.push_back(c);
   }
-  markers_.resize(cells_.size());
-  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
-  for (std::size_t k = 0; k < cells_.size(); ++k) markers_[next[cells_[k]]++] = static_cast<std::uint32_t>(k);
 }
 
 double DividedMap::void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps) const {

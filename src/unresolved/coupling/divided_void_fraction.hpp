@@ -57,6 +57,8 @@ class DividedMap {
   [[nodiscard]] double fluid_volume_m3(std::size_t cell) const { return grid_.fluid_fractions()[cell] * cell_volume_m3_; }
 
  private:
+  void sort_by_cell(std::size_t n_cells);
+
   // Below this many occupied cells the sums run on one thread (an OpenMP region costs more than the loop).
   static constexpr std::int64_t kParallelCells = 4096;
 
