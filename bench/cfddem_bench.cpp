@@ -32,13 +32,23 @@ namespace {
 using namespace hs::unresolved;
 
 constexpr int open_tube_repetitions = 5;   // timed CFD steps per open-tube size (median)
+// Set to a comma-separated list of RBC counts (e.g. "100000"): only those periodic sizes, no open tube (profiling
+// one size during development; bench/results/README.md).
+constexpr const char* periodic_sizes_env = "HS_BENCH_CFDDEM_SIZES";
 
 struct Measured {
   double s_per_cfd_step;
   double peak_rss_gib;
   int n_coupling;
   long cells;
+  double mean_substeps;                 // DEM steps per timed CFD step (drag-limited: fewer than n_coupling)
+  std::vector<double> stage_seconds;    // summed over the timed steps, in stage_names order
+  long amg_setups;                      // BoomerAMG set-ups and reuses over the timed steps
+  long amg_reuses;
 };
+
+// The coupling's four stages, as the case skeleton names them (docs/cfd-dem.md).
+const std::vector<std::string> stage_names{"dem_substeps", "particles_to_grid", "fluid_step", "fluid_to_particles"};
 
 Measured measure(long n_rbc, int repetitions) {
   const double d_tube = 100e-6;
@@ -71,13 +81,33 @@ Measured measure(long n_rbc, int repetitions) {
   coupling.set_mean_velocity_m_s(1e-3);
   coupling.step();   // warm-up: list build, AMG set-up
   std::vector<double> times;
+  std::vector<double> stages(stage_names.size(), 0.0);
+  long substeps = 0;
+  const long setups0 = fluid.pressure_solver().setups(), reuses0 = fluid.pressure_solver().reuses();
+  using Clock = std::chrono::steady_clock;
   for (int k = 0; k < repetitions; ++k) {
-    const auto t0 = std::chrono::steady_clock::now();
-    coupling.step();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    const auto t0 = Clock::now();
+    auto t = t0;
+    const auto lap = [&](std::size_t stage) {
+      const auto now = Clock::now();
+      stages[stage] += std::chrono::duration<double>(now - t).count();
+      t = now;
+    };
+    coupling.dem_substeps();
+    lap(0);
+    coupling.particles_to_grid();
+    lap(1);
+    coupling.fluid_step();
+    lap(2);
+    coupling.fluid_to_particles();
+    lap(3);
+    times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    substeps += coupling.last_substeps();
   }
   std::sort(times.begin(), times.end());
-  return {times[times.size() / 2], peak_rss_gib(), n_coupling, grid.cell_count()};
+  return {times[times.size() / 2], peak_rss_gib(), n_coupling, grid.cell_count(),
+          static_cast<double>(substeps) / repetitions, stages, fluid.pressure_solver().setups() - setups0,
+          fluid.pressure_solver().reuses() - reuses0};
 }
 
 /// The open tube at 1e4 and 1e5 cells (1e4 with --quick), each in a child process; JSON keyed "1e4", "1e5".
@@ -108,18 +138,33 @@ int run_cfddem_bench(const hs::common::TaskOptions& options) {
     if (options.json_file) hs::common::write_json(*options.json_file, m);
     return 0;
   }
-  const std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
+  std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
+  const char* only = std::getenv(periodic_sizes_env);   // development: these periodic sizes only, no open tube
+  if (only != nullptr) {
+    sizes.clear();
+    for (std::string rest = only; !rest.empty();) {
+      const std::size_t comma = rest.find(',');
+      sizes.push_back(std::stol(rest.substr(0, comma)));
+      rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+    }
+  }
   nlohmann::json j;
   fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s\n");
   for (const long n : sizes) {
     const Measured m = measure(n, 3);
-    fmt::print("  {:>8} RBCs: {:.3f} s per CFD step (median of 3, n_coupling = {}, {} cells), peak RSS {:.2f} GiB\n", n,
-               m.s_per_cfd_step, m.n_coupling, m.cells, m.peak_rss_gib);
+    fmt::print("  {:>8} RBCs: {:.3f} s per CFD step (median of 3, n_coupling = {}, {:.1f} DEM steps per CFD step, {} cells), "
+               "peak RSS {:.2f} GiB; stages (s, 3 steps):", n, m.s_per_cfd_step, m.n_coupling, m.mean_substeps, m.cells, m.peak_rss_gib);
+    for (std::size_t s = 0; s < stage_names.size(); ++s) fmt::print(" {} {:.3f}", stage_names[s], m.stage_seconds[s]);
+    fmt::print("; AMG set-ups {} reuses {}\n", m.amg_setups, m.amg_reuses);
     const std::string key = fmt::format("cfddem_1e{}", static_cast<int>(std::lround(std::log10(static_cast<double>(n)))));
     j[key + "_s_per_cfd_step"] = m.s_per_cfd_step;
     j[key + "_peak_rss_GiB"] = m.peak_rss_gib;
+    j[key + "_dem_steps_per_cfd_step"] = m.mean_substeps;
+    for (std::size_t s = 0; s < stage_names.size(); ++s) j[key + "_stage_s"][stage_names[s]] = m.stage_seconds[s];
+    j[key + "_amg_setups"] = m.amg_setups;
+    j[key + "_amg_reuses"] = m.amg_reuses;
   }
-  j["open_tube"] = open_tube_sizes(options.quick);
+  if (only == nullptr) j["open_tube"] = open_tube_sizes(options.quick);
   hs::common::CheckList checks;
   const auto measured = [&j](const char* key) { return j.contains(key) ? std::optional<double>(j[key].get<double>()) : std::nullopt; };
   expect_at_most(checks, options, "cfddem_1e6_s_per_cfd_step", measured("cfddem_1e6_s_per_cfd_step"), 2.0,

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -15,6 +17,9 @@ namespace hs::unresolved {
 namespace {
 
 using hs::common::Vec3;
+
+// Below this many particles the per-particle loops run on one thread (an OpenMP region costs more).
+constexpr std::int64_t kParallelParticles = 4096;
 
 Vec3 particle_position(const ParticleStore& p, std::size_t i) {
   return {p.position_m()[0][i], p.position_m()[1][i], p.position_m()[2][i]};
@@ -123,6 +128,8 @@ void CfdDemCoupling::particle_forces() {
   auto& beta = p.drag_coefficient_N_s_m();
   auto& uf_col = p.fluid_velocity_m_s();
   auto& di = p.deformation_index();
+  auto& beta_r = p.rotational_drag_N_m_s();
+  auto& omega_col = p.fluid_angular_velocity_rad_s();
   auto& lift_col = p.lift_force_N();
   const bool correct = settings_.self_induced_correction && settings_.two_way;
   const double dt = fluid_.settings().dt_s;
@@ -130,6 +137,21 @@ void CfdDemCoupling::particle_forces() {
   map_.locate(p);
   if (channel_) channel_->new_step();
   const BlockField<double>& eps = fluid_.void_fraction();
+  // What the threaded loop below must not do itself: the channel frame's memo and the self-mobility tables are
+  // filled here, on one thread, in particle order.
+  std::vector<LocalChannel> channels;
+  if (channel_) {
+    channels.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) channels.push_back(local_channel(particle_position(p, i)));
+  }
+  if (correct) {
+    for (std::size_t i = 0; i < n; ++i) (void)self_mobility(2.0 * p.radius_m()[i]);
+  }
+  // A bad drag coefficient is reported for the first particle that had one, after the loop (an exception must not
+  // leave an OpenMP region).
+  std::size_t bad = n;
+  std::string bad_message;
+#pragma omp parallel for schedule(static) if (static_cast<std::int64_t>(n) > kParallelParticles)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x = particle_position(p, i);
     const double d = 2.0 * p.radius_m()[i];
@@ -141,7 +163,14 @@ void CfdDemCoupling::particle_forces() {
       uf = uf - self_mobility(d).induced_velocity(x, -1.0 * (j / dt + lift_before));
     }
     const auto grad = fluid_.velocity_gradient_at(x);
-    const LocalChannel channel = local_channel(x);
+    if (settings_.fluid_torque) {
+      // Omega_f = curl(u) / 2 with grad[a][b] = du_a / dx_b; beta_r = pi mu d^3 (a sphere in Stokes flow).
+      omega_col[0][i] = 0.5 * (grad[2][1] - grad[1][2]);
+      omega_col[1][i] = 0.5 * (grad[0][2] - grad[2][0]);
+      omega_col[2][i] = 0.5 * (grad[1][0] - grad[0][1]);
+      beta_r[i] = std::numbers::pi * mu * d * d * d;
+    }
+    const LocalChannel channel = channel_ ? channels[i] : local_channel(x);
     hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)], channel);
     // DI = (L - B)/(L + B) lies in [0, 1) by definition; a learned DI evaluated outside its training range can
     // leave it (e.g. u_r+ > 0 in a transient), and a negative DI then fed back into C_d(DI) runs away.
@@ -151,9 +180,14 @@ void CfdDemCoupling::particle_forces() {
     const double k_wall = hs::closures::wall_correction_factor(settings_.wall_correction, d, 2.0 * channel.radius_m);
     beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in) * k_wall;
     if (!(beta[i] >= 0.0) || !std::isfinite(beta[i])) {
-      throw hs::common::NumericalError(fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
-                                                   "gamma+ = {:.4g}, u_r+ = {:.4g}): a drag coefficient must be finite and >= 0",
-                                                   beta[i], in.re_p, in.di, in.gamma_plus, in.u_r_plus));
+#pragma omp critical(coupling_bad_drag)
+      if (i < bad) {
+        bad = i;
+        bad_message = fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
+                                  "gamma+ = {:.4g}, u_r+ = {:.4g}): a drag coefficient must be finite and >= 0",
+                                  beta[i], in.re_p, in.di, in.gamma_plus, in.u_r_plus);
+      }
+      continue;
     }
     Vec3 f{};
     Vec3 lift{};
@@ -170,13 +204,19 @@ void CfdDemCoupling::particle_forces() {
       }
       lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * channel.lift_direction;
       f = f + lift;
-      for (int m = 0; m < kMarkersPerSphere; ++m) lift_reaction_N_[map_.cell(i, m)] -= lift / kMarkersPerSphere;
     }
     for (int a = 0; a < 3; ++a) {
       ext[static_cast<std::size_t>(a)][i] = f[a];
       uf_col[static_cast<std::size_t>(a)][i] = uf[a];
       lift_col[static_cast<std::size_t>(a)][i] = lift[a];
     }
+  }
+  if (bad < n) throw hs::common::NumericalError(bad_message);
+  if (closures_.lift) {   // the fluid gets minus the lift, spread over the sphere's markers
+    map_.for_each_cell([&](std::size_t c, std::size_t k) {
+      const std::size_t i = k / kMarkersPerSphere;
+      lift_reaction_N_[c] -= Vec3{lift_col[0][i], lift_col[1][i], lift_col[2][i]} / kMarkersPerSphere;
+    });
   }
 }
 
@@ -204,16 +244,13 @@ void CfdDemCoupling::fill_fields() {
   BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
   us.fill(Vec3{});
   constexpr double w = 1.0 / kMarkersPerSphere;
-  for (std::size_t i = 0; i < map_.size(); ++i) {
-    const Vec3 v = particle_velocity(p, i);
-    const double beta = p.drag_coefficient_N_s_m()[i];
-    for (int m = 0; m < kMarkersPerSphere; ++m) {
-      const std::size_t c = map_.cell(i, m);
-      weight[c] += w;
-      us[c] += w * v;
-      ksl[c] += w * beta / map_.fluid_volume_m3(c);
-    }
-  }
+  const ParticleStore& cp = p;
+  map_.for_each_cell([&](std::size_t c, std::size_t k) {
+    const std::size_t i = k / kMarkersPerSphere;
+    weight[c] += w;
+    us[c] += w * particle_velocity(cp, i);
+    ksl[c] += w * cp.drag_coefficient_N_s_m()[i] / map_.fluid_volume_m3(c);
+  });
   for (std::size_t c = 0; c < weight.data().size(); ++c) {
     if (weight[c] > 0.0) us[c] = us[c] / weight[c];
   }
@@ -231,22 +268,17 @@ void CfdDemCoupling::exchange_drag() {
   BlockField<Vec3>& f = fluid_.explicit_force_density_N_m3();
   f.fill(Vec3{});
   stats_.drag_impulse_particles_N_s = {};
-  for (std::size_t i = 0; i < map_.size(); ++i) {
-    const Vec3 j{p.drag_impulse_N_s()[0][i], p.drag_impulse_N_s()[1][i], p.drag_impulse_N_s()[2][i]};
-    stats_.drag_impulse_particles_N_s += j;
-    for (int m = 0; m < kMarkersPerSphere; ++m) {
-      const std::size_t c = map_.cell(i, m);
-      f[c] -= j / (kMarkersPerSphere * map_.fluid_volume_m3(c) * dt);
-    }
-  }
-  if (map_.size() > 0) {   // give back the imbalance of earlier steps through the particles' cells
-    const Vec3 share = stats_.pending_N_s / static_cast<double>(map_.size() * kMarkersPerSphere);
-    for (std::size_t i = 0; i < map_.size(); ++i) {
-      for (int m = 0; m < kMarkersPerSphere; ++m) {
-        const std::size_t c = map_.cell(i, m);
-        f[c] -= share / (map_.fluid_volume_m3(c) * dt);
-      }
-    }
+  const auto& imp = p.drag_impulse_N_s();
+  for (std::size_t i = 0; i < map_.size(); ++i) stats_.drag_impulse_particles_N_s += Vec3{imp[0][i], imp[1][i], imp[2][i]};
+  // Each cell adds its markers' impulses first, then the share of the imbalance of earlier steps given back through
+  // the particles' cells: the order of the serial loops this replaces.
+  const Vec3 share = map_.size() > 0 ? stats_.pending_N_s / static_cast<double>(map_.size() * kMarkersPerSphere) : Vec3{};
+  map_.for_each_cell([&](std::size_t c, std::size_t k) {
+    const std::size_t i = k / kMarkersPerSphere;
+    f[c] -= Vec3{imp[0][i], imp[1][i], imp[2][i]} / (kMarkersPerSphere * map_.fluid_volume_m3(c) * dt);
+  });
+  if (map_.size() > 0) {
+    map_.for_each_cell([&](std::size_t c, std::size_t) { f[c] -= share / (map_.fluid_volume_m3(c) * dt); });
   }
   const BlockField<double>& ksl = fluid_.implicit_coefficient_kg_m3_s();
   const BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
@@ -271,7 +303,19 @@ void CfdDemCoupling::dem_substeps() {
   if (steps_ == 0) particle_forces();
   ParticleStore& p = dem_.particles();
   for (auto& col : p.drag_impulse_N_s()) std::fill(col.begin(), col.end(), 0.0);
-  for (int s = 0; s < settings_.n_coupling; ++s) dem_.step();
+  const double dt = fluid_.settings().dt_s;
+  int n = settings_.n_coupling;
+  if (settings_.dem_substeps == DemSubsteps::drag_limited) {
+    last_drag_limited_ = dem_.drag_limited_step();
+    if (last_drag_limited_.applies) {
+      const double wanted = std::ceil(dt / last_drag_limited_.time_step_s);
+      n = static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(settings_.n_coupling)));
+    }
+  }
+  dem_.set_time_step_s(dt / n);
+  for (int s = 0; s < n; ++s) dem_.step();
+  last_substeps_ = n;
+  total_substeps_ += n;
 }
 
 void CfdDemCoupling::particles_to_grid() {

@@ -33,8 +33,19 @@ enum class FluidDrag { implicit, explicit_impulse };
 /// tube"), for any geometry; in a straight tube it gives the tube frame's values (channel_frame_test).
 enum class ClosureFrame { tube, channel };
 
+/// How many DEM steps a CFD step takes. fixed: n_coupling, the inertial step dt_CFD / n_coupling <= 0.1
+/// min(t_Rayleigh, t_Hertz) the case checked. drag_limited: as few as the drag-limited step allows
+/// (drag_limited_step.hpp: the contacts relax against the fluid drag), at most n_coupling, chosen anew at the
+/// start of every CFD step; where the rule does not apply (no fluid torque, a contact not overdamped) n_coupling.
+enum class DemSubsteps { fixed, drag_limited };
+
 struct CouplingSettings {
-  int n_coupling = 1;                 // DEM steps per CFD step (dt_CFD = n_coupling dt_DEM)
+  int n_coupling = 1;                 // DEM steps per CFD step (dt_CFD = n_coupling dt_DEM): the inertial count
+  DemSubsteps dem_substeps = DemSubsteps::drag_limited;
+  // The fluid torque pi mu d^3 (Omega_f - w) on each sphere (Stokes' rotlet, Omega_f half the vorticity at its
+  // centre), integrated exactly (exponential_verlet.hpp); the fluid gets no reaction torque (model A). It makes
+  // the rotation overdamped like the translation, which the drag-limited step needs.
+  bool fluid_torque = true;
   double eps_min = 0.1;               // CFDEM alphaMin default (unresolved-methods.md sec. 2)
   int refresh_every = 1;              // CFD steps between rebuilds of the eps/Ksl pressure matrix
   FluidDrag fluid_drag = FluidDrag::implicit;
@@ -111,6 +122,11 @@ class CfdDemCoupling {
   [[nodiscard]] const ExchangeStats& exchange() const { return stats_; }
   [[nodiscard]] const DividedMap& map() const { return map_; }
   [[nodiscard]] long steps() const { return steps_; }
+  /// DEM steps taken by the last CFD step, and over the run (since construction or the restart).
+  [[nodiscard]] int last_substeps() const { return last_substeps_; }
+  [[nodiscard]] long total_substeps() const { return total_substeps_; }
+  /// The drag-limited step computed at the start of the last CFD step (drag_limited mode only).
+  [[nodiscard]] const DragLimitedStep& last_drag_limited_step() const { return last_drag_limited_; }
   /// Mean axial velocity u_av of u_r+ in the tube frame (set by the case; until set, u_r+ = 0). The channel frame
   /// measures it at every sphere instead.
   void set_mean_velocity_m_s(double u_av) { mean_velocity_m_s_ = u_av; }
@@ -160,6 +176,9 @@ class CfdDemCoupling {
   ExchangeStats stats_;
   double mean_velocity_m_s_ = 0.0;
   long steps_ = 0;
+  int last_substeps_ = 0;
+  long total_substeps_ = 0;
+  DragLimitedStep last_drag_limited_;
   std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
   std::unique_ptr<ChannelFrame> channel_;       // the channel frame's memo (closure_frame = channel)
 };

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <omp.h>
+
 #include "common/errors.hpp"
 
 namespace hs::unresolved {
@@ -58,10 +60,15 @@ void DividedMap::locate(const ParticleStore& particles) {
   const auto& pos = particles.position_m();
   const auto& markers = divided_markers();
   const BlockField<double>& ff = grid_.fluid_fractions();
+  bool lost = false;
+#pragma omp parallel for schedule(static) reduction(|| : lost) if (n > 4096)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x{pos[0][i], pos[1][i], pos[2][i]};
     const auto centre = grid_.cell_of(x);
-    if (!centre) throw hs::common::NumericalError("coupling: a particle centre left the fluid grid");
+    if (!centre) {
+      lost = true;   // thrown below: an exception must not leave an OpenMP region
+      continue;
+    }
     const std::size_t c0 = ff.index((*centre)[0], (*centre)[1], (*centre)[2]);
     for (int m = 0; m < kMarkersPerSphere; ++m) {
       const auto at = grid_.cell_of(x + particles.radius_m()[i] * markers[static_cast<std::size_t>(m)]);
@@ -70,15 +77,53 @@ void DividedMap::locate(const ParticleStore& particles) {
       cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)] = c;
     }
   }
+  if (lost) throw hs::common::NumericalError("coupling: a particle centre left the fluid grid");
+  sort_by_cell(ff.data().size());
+}
+
+void DividedMap::sort_by_cell(std::size_t n_cells) {
+  // Counting sort, stable in the marker index: each thread counts a contiguous range of markers; a cell's markers
+  // from thread 0 come first, then thread 1's, ..., so the order is ascending k at any thread count.
+  const std::size_t n_markers = cells_.size();
+  const int n_threads = n_markers > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
+  std::vector<std::vector<std::uint32_t>> count(static_cast<std::size_t>(n_threads));
+  start_.assign(n_cells + 1, 0);
+  markers_.resize(n_markers);
+#pragma omp parallel num_threads(n_threads)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t lo = n_markers * t / count.size(), hi = n_markers * (t + 1) / count.size();
+    std::vector<std::uint32_t>& mine = count[t];
+    mine.assign(n_cells, 0);
+    for (std::size_t k = lo; k < hi; ++k) ++mine[cells_[k]];
+#pragma omp barrier
+#pragma omp single
+    {
+      std::uint32_t total = 0;
+      for (std::size_t c = 0; c < n_cells; ++c) {
+        start_[c] = total;
+        for (auto& per_thread : count) {   // becomes each thread's first slot in cell c
+          const std::uint32_t n_here = per_thread[c];
+          per_thread[c] = total;
+          total += n_here;
+        }
+      }
+      start_[n_cells] = total;
+    }
+    for (std::size_t k = lo; k < hi; ++k) markers_[mine[cells_[k]]++] = static_cast<std::uint32_t>(k);
+  }
+  occupied_.clear();
+  for (std::size_t c = 0; c < n_cells; ++c) {
+    if (start_[c + 1] > start_[c]) occupied_.push_back(c);
+  }
 }
 
 double DividedMap::void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps) const {
   BlockField<double> solid(grid_.cells(), 0.0);
-  for (std::size_t i = 0; i < size(); ++i) {
-    const double r = particles.radius_m()[i];
-    const double v_marker = 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
-    for (int m = 0; m < kMarkersPerSphere; ++m) solid[cell(i, m)] += v_marker;
-  }
+  for_each_cell([&](std::size_t c, std::size_t k) {
+    const double r = particles.radius_m()[k / kMarkersPerSphere];
+    solid[c] += 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
+  });
   double lost_m3 = 0.0;
   const BlockField<double>& ff = grid_.fluid_fractions();
   const auto& n = grid_.cells();

@@ -19,8 +19,11 @@
 namespace hs::unresolved {
 namespace {
 
-// 2: with the lift column; 3: with the inlet-opening column after the ids (2 is still read: openings = -1).
-constexpr std::array<char, 8> magic = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '3'};
+// 2: with the lift column; 3: with the inlet-opening column after the ids (2 is still read: openings = -1);
+// 4: with the fluid-torque columns after the inlet openings (2 and 3 are still read: no fluid torque until the
+// coupling sets it at the end of the next step).
+constexpr std::array<char, 8> magic = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '4'};
+constexpr std::array<char, 8> magic_v3 = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '3'};
 constexpr std::array<char, 8> magic_v2 = {'H', 'S', 'D', 'E', 'M', 'C', 'K', '2'};
 
 /// The columns in file order; the same list for writing and reading.
@@ -32,6 +35,14 @@ void for_each_saved_column(Store& p, F&& f) {
     for (auto& c : *v3) f(c);
   }
   for (auto* c : {&p.radius_m(), &p.mass_kg(), &p.drag_coefficient_N_s_m(), &p.deformation_index()}) f(*c);
+}
+
+/// The fluid-torque columns (rotational drag and the fluid's angular velocity), saved apart from the others so
+/// that checkpoints written before they existed still read.
+template <typename Store, typename F>
+void for_each_torque_column(Store& p, F&& f) {
+  for (auto& c : p.fluid_angular_velocity_rad_s()) f(c);
+  f(p.rotational_drag_N_m_s());
 }
 
 template <typename T>
@@ -68,6 +79,7 @@ void write_dem_checkpoint(const DemSystem& dem, const std::filesystem::path& fil
     for_each_saved_column(p, [&](const std::vector<double>& c) { put(out, c.data(), p.n_owned()); });
     put(out, p.id().data(), p.n_owned());
     put(out, p.inlet_opening().data(), p.n_owned());
+    for_each_torque_column(p, [&](const std::vector<double>& c) { put(out, c.data(), p.n_owned()); });
     for (std::size_t k = 0; k < h.keys.size(); ++k) {
       const std::int64_t ids[2] = {h.keys[k].first, h.keys[k].second};
       put(out, ids, 2);
@@ -81,7 +93,7 @@ void read_dem_checkpoint(DemSystem& dem, const std::filesystem::path& file) {
   std::array<char, 8> head{};
   if (!in) throw hs::common::ConfigError(fmt::format("{}: cannot open the DEM checkpoint", file.string()));
   get(in, head.data(), head.size(), file);
-  if (head != magic && head != magic_v2) {
+  if (head != magic && head != magic_v3 && head != magic_v2) {
     throw hs::common::ConfigError(fmt::format("{}: not a hemoscale DEM checkpoint of this version", file.string()));
   }
   std::uint64_t counts[2] = {0, 0};
@@ -91,7 +103,8 @@ void read_dem_checkpoint(DemSystem& dem, const std::filesystem::path& file) {
   for (std::uint64_t i = 0; i < counts[0]; ++i) p.add({});
   for_each_saved_column(p, [&](std::vector<double>& c) { get(in, c.data(), counts[0], file); });
   get(in, p.id().data(), counts[0], file);
-  if (head == magic) get(in, p.inlet_opening().data(), counts[0], file);   // v2: left at no_inlet_opening
+  if (head != magic_v2) get(in, p.inlet_opening().data(), counts[0], file);   // v2: left at no_inlet_opening
+  if (head == magic) for_each_torque_column(p, [&](std::vector<double>& c) { get(in, c.data(), counts[0], file); });
   ContactHistory h;
   for (std::uint64_t k = 0; k < counts[1]; ++k) {
     std::int64_t ids[2];
@@ -110,6 +123,9 @@ void write_dem_state(const DemSystem& dem, hs::common::Checkpoint& cp, const std
   std::vector<double> columns;
   for_each_saved_column(p, [&](const std::vector<double>& c) { columns.insert(columns.end(), c.begin(), c.begin() + static_cast<long>(n)); });
   cp.put(prefix + "columns", columns);
+  std::vector<double> torque;
+  for_each_torque_column(p, [&](const std::vector<double>& c) { torque.insert(torque.end(), c.begin(), c.begin() + static_cast<long>(n)); });
+  cp.put(prefix + "torque_columns", torque);
   cp.put(prefix + "ids", std::span<const std::int64_t>(p.id().data(), n));
   const auto& openings = p.inlet_opening();
   cp.put(prefix + "inlet_opening",
@@ -147,6 +163,18 @@ void read_dem_state(DemSystem& dem, const hs::common::Checkpoint& cp, const std:
   });
   std::copy(ids.begin(), ids.end(), p.id().begin());
   read_inlet_openings(p, cp, prefix);
+  if (cp.has(prefix + "torque_columns")) {   // absent before the fluid torque existed: none until the next step sets it
+    const std::vector<double>& torque = cp.doubles(prefix + "torque_columns");
+    if (torque.size() != 4 * n) {
+      throw hs::common::ConfigError(fmt::format("checkpoint: DEM state \"{}\" has {} fluid-torque values for {} particles",
+                                                prefix, torque.size(), n));
+    }
+    std::size_t t = 0;
+    for_each_torque_column(p, [&](std::vector<double>& c) {
+      std::copy(torque.begin() + static_cast<long>(t), torque.begin() + static_cast<long>(t + n), c.begin());
+      t += n;
+    });
+  }
   ContactHistory h;
   for (std::size_t k = 0; k < keys.size() / 2; ++k) {
     h.keys.emplace_back(keys[2 * k], keys[2 * k + 1]);

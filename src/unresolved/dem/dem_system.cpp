@@ -142,6 +142,22 @@ void DemSystem::step() {
   exponential_half_kick(particles_, 0.5 * dt);
 }
 
+void DemSystem::set_time_step_s(double dt_s) {
+  if (!(dt_s > 0.0) || !std::isfinite(dt_s)) {
+    throw hs::common::NumericalError(fmt::format("DEM: time step {:.4g} s must be finite and > 0", dt_s));
+  }
+  settings_.time_step_s = dt_s;
+}
+
+DragLimitedStep DemSystem::drag_limited_step() {
+  if (initialized_) {
+    rebuild();   // keeps the forces (they move with their particles) and the springs (by id)
+  } else {
+    initialize();
+  }
+  return hs::unresolved::drag_limited_step(particles_, list_, law_, wall_contacts_.get());
+}
+
 double DemSystem::max_speed_m_s() const {
   const auto& v = particles_.velocity_m_s();
   double v2 = 0.0;

@@ -10,6 +10,7 @@
 
 #include "common/geometry/shape.hpp"
 #include "unresolved/dem/domain.hpp"
+#include "unresolved/dem/drag_limited_step.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/neighbor_list.hpp"
 #include "unresolved/dem/pair_contacts.hpp"
@@ -49,6 +50,13 @@ class DemSystem {
   [[nodiscard]] const ParticleParams& params() const { return settings_.params; }
   [[nodiscard]] const Domain& domain() const { return settings_.domain; }
   [[nodiscard]] double time_step_s() const { return settings_.time_step_s; }
+  /// Changes the step between steps (the coupling's drag-limited sub-step); the caller answers for its stability
+  /// (drag_limited_step()). The tangential springs carry over (they integrate v_t dt with the new dt).
+  void set_time_step_s(double dt_s);
+  /// The drag-limited step of the particles as they are now (drag_limited_step.hpp), after a fresh neighbour list
+  /// (initializes if needed): the bound counts the listed pairs, and a list built from the current positions is
+  /// the same in a run and in its restart, so both choose the same step.
+  [[nodiscard]] DragLimitedStep drag_limited_step();
   [[nodiscard]] const NeighborList& neighbor_list() const { return list_; }
   [[nodiscard]] const DemStepStats& stats() const { return stats_; }
 

@@ -69,19 +69,22 @@ void exponential_half_kick(ParticleStore& p, double h_s) {
   const auto& tq = p.torque_Nm();
   const auto& te = cp.external_torque_Nm();
   const auto& uf = cp.fluid_velocity_m_s();
+  const auto& wf = cp.fluid_angular_velocity_rad_s();
   const double* beta = cp.drag_coefficient_N_s_m().data();
+  const double* beta_r = cp.rotational_drag_N_m_s().data();
 #pragma omp parallel for schedule(static) if (n > omp_min_particles)
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     const double inv_m = 1.0 / mass[i];
-    const double hi = h_s * inv_m / (0.4 * rad[i] * rad[i]);
+    const double inv_i = inv_m / (0.4 * rad[i] * rad[i]);
     const double g = h_s * phi1(h_s * beta[i] * inv_m);
+    const double gr = h_s * phi1(h_s * beta_r[i] * inv_i);   // the rotational relaxation I / beta_r, likewise
     for (int a = 0; a < 3; ++a) {
       const double force = f[a][i] + fe[a][i];
       const double dv = g * (force + beta[i] * (uf[a][i] - v[a][i])) * inv_m;
       v[a][i] += dv;
       imp[a][i] += mass[i] * dv - h_s * force;
-      w[a][i] += hi * (tq[a][i] + te[a][i]);
+      w[a][i] += gr * (tq[a][i] + te[a][i] + beta_r[i] * (wf[a][i] - w[a][i])) * inv_i;
     }
   }
 }

@@ -11,7 +11,9 @@ namespace hs::unresolved {
 ///   v <- v + g (F + beta (u_f - v)) / m,   g = h (1 - exp(-x)) / x,  x = h beta / m
 /// (g = h when beta = 0: plain velocity Verlet). Unconditionally stable in beta: for x >> 1, v -> u_f + F/beta,
 /// the terminal velocity, instead of the explicit step's growing oscillation (unresolved-methods.md 8, item 3).
-/// Angular velocity: w += h (T + T_ext) / (0.4 m r^2) (fix nve/sphere). The drag part of the impulse, m dv - h F, is added
+/// Angular velocity likewise with the rotational drag beta_r (Omega_f - w) (ParticleStore::rotational_drag_N_m_s(),
+/// I = 0.4 m r^2; beta_r = 0: w += h (T + T_ext) / I as fix nve/sphere). For an RBC sphere in plasma I / beta_r is
+/// 0.5 us, below the DEM step: an explicit fluid torque would diverge. The drag part of the impulse, m dv - h F, is added
 /// to drag_impulse_N_s() so the coupling can give the fluid exactly the opposite.
 void exponential_half_kick(ParticleStore& particles, double h_s);
 

@@ -11,10 +11,10 @@ namespace hs::unresolved {
 template <typename F>
 void ParticleStore::for_each_column(F&& f) {
   for (auto* v3 : {&pos_, &vel_, &omega_, &force_, &torque_, &ext_force_, &ext_torque_, &fluid_vel_,
-                   &drag_impulse_, &lift_, &wall_shear_}) {
+                   &drag_impulse_, &lift_, &wall_shear_, &fluid_omega_}) {
     for (auto& c : *v3) f(c);
   }
-  for (auto* c : {&radius_, &mass_, &drag_beta_, &di_}) f(*c);
+  for (auto* c : {&radius_, &mass_, &drag_beta_, &di_, &rot_drag_}) f(*c);
 }
 
 template <typename F>

@@ -77,6 +77,11 @@ class ParticleStore {
   [[nodiscard]] bool external_used() const { return external_used_; }
   [[nodiscard]] bool drag_used() const { return drag_used_; }
   Vec3Columns& fluid_velocity_m_s() { return fluid_vel_; }
+  /// Rotational drag beta_r (Omega_f - w), integrated exactly like the linear drag (when drag_used()): beta_r in
+  /// N m s (pi mu d^3 for a sphere in Stokes flow), Omega_f the fluid's angular velocity (half the vorticity) at the
+  /// particle. Zero beta_r: no fluid torque. The fluid gets no reaction torque (CFDEM model A).
+  Column& rotational_drag_N_m_s() { return rot_drag_; }
+  Vec3Columns& fluid_angular_velocity_rad_s() { return fluid_omega_; }
   /// Drag impulse (N s) given to each particle since the coupling last zeroed it: the fluid gets minus this.
   Vec3Columns& drag_impulse_N_s() { return drag_impulse_; }
   /// Lift force of the current coupling step (N, part of the external force): the fluid gets minus this.
@@ -89,6 +94,8 @@ class ParticleStore {
   const Vec3Columns& external_torque_Nm() const { return ext_torque_; }
   const Column& drag_coefficient_N_s_m() const { return drag_beta_; }
   const Vec3Columns& fluid_velocity_m_s() const { return fluid_vel_; }
+  const Column& rotational_drag_N_m_s() const { return rot_drag_; }
+  const Vec3Columns& fluid_angular_velocity_rad_s() const { return fluid_omega_; }
   const Vec3Columns& drag_impulse_N_s() const { return drag_impulse_; }
   const Vec3Columns& lift_force_N() const { return lift_; }
   const Column& deformation_index() const { return di_; }
@@ -125,8 +132,8 @@ class ParticleStore {
   Column radius_, mass_;
   std::vector<std::int64_t> id_;
   std::vector<std::int32_t> inlet_opening_;
-  Vec3Columns ext_force_, ext_torque_, fluid_vel_, drag_impulse_, lift_, wall_shear_;
-  Column drag_beta_, di_;
+  Vec3Columns ext_force_, ext_torque_, fluid_vel_, drag_impulse_, lift_, wall_shear_, fluid_omega_;
+  Column drag_beta_, di_, rot_drag_;
   std::vector<std::size_t> ghost_owner_;
   std::vector<hs::common::Vec3> ghost_shift_;
 };

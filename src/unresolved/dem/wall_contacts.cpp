@@ -36,6 +36,10 @@ hs::common::Vec3 WallContacts::outward_normal(const hs::common::Vec3& x, double 
   return hs::common::normalized(g);
 }
 
+hs::common::Vec3 WallContacts::outward_normal_at(const hs::common::Vec3& x, double r) const {
+  return outward_normal(x, normal_step_fraction * r);
+}
+
 std::size_t WallContacts::compute(ParticleStore& p, double dt_s) const {
   auto& pos = p.position_m();
   auto& v = p.velocity_m_s();

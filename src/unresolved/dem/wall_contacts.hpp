@@ -23,6 +23,11 @@ class WallContacts {
   void select_candidates(const ParticleStore& particles, double skin_m);
   /// Adds the wall forces and torques to the owned particles; returns the number of wall contacts.
   std::size_t compute(ParticleStore& particles, double dt_s) const;
+  /// The particles kept by the last select_candidates().
+  [[nodiscard]] const std::vector<std::size_t>& candidates() const { return candidates_; }
+  /// Overlap r + phi(x) of a sphere of radius r at x (> 0 in contact) and the wall's outward normal there.
+  [[nodiscard]] double overlap_m(const hs::common::Vec3& x_m, double r_m) const { return r_m + shape_.signed_distance(x_m); }
+  [[nodiscard]] hs::common::Vec3 outward_normal_at(const hs::common::Vec3& x_m, double r_m) const;
 
  private:
   [[nodiscard]] hs::common::Vec3 outward_normal(const hs::common::Vec3& x_m, double h_m) const;

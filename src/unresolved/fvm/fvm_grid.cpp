@@ -91,7 +91,9 @@ Vec3 FvmGrid::wrap(const Vec3& x_m) const {
   for (int a = 0; a < 3; ++a) {
     if (!periodic(a)) continue;
     const double length = n_[static_cast<std::size_t>(a)] * dx_m_;
-    x[a] = lo_[a] + std::fmod(std::fmod(x[a] - lo_[a], length) + length, length);
+    const double t = x[a] - lo_[a];
+    if (t >= 0.0 && t < length) continue;   // inside already (nearly always): no division, the point unchanged
+    x[a] = lo_[a] + std::fmod(std::fmod(t, length) + length, length);
   }
   return x;
 }

@@ -136,20 +136,23 @@ void FvmSolver::build_component(int c) {
 }
 
 void FvmSolver::step() {
-  if (coefficients_dirty_) {
-    fill_cell_ghosts(eps_);
-    fill_cell_ghosts(ksl_);
-    if (variable_viscosity_) fill_cell_ghosts(visc_);
-    for (int c = 0; c < 3; ++c) assemble_momentum(c);   // A (hence rAU) depends on eps and Ksl
-    build_pressure_matrix();
-    if (drive_.mode == FlowDrive::Mode::flow_rate) compute_drive_response();
-    coefficients_dirty_ = false;
-  }
+  const bool rebuild = coefficients_dirty_;
   fill_cell_ghosts(eps_);
   fill_cell_ghosts(ksl_);
+  if (rebuild) {
+    if (variable_viscosity_) fill_cell_ghosts(visc_);
+    // The drive response assembles the drive axis without convection: before the step's own assembly.
+    if (drive_.mode == FlowDrive::Mode::flow_rate) compute_drive_response();
+  }
+  // Assembled once a step: the pressure matrix takes its A (hence rAU, which depends on eps and Ksl) from the
+  // same rows the predictor solves.
+  for (int c = 0; c < 3; ++c) assemble_momentum(c);
+  if (rebuild) {
+    build_pressure_matrix();
+    coefficients_dirty_ = false;
+  }
   stats_ = StepStats{};
   for (int c = 0; c < 3; ++c) {
-    assemble_momentum(c);
     if (piso_.momentum_predictor) solve_momentum(c);
   }
   const int correctors = piso_.coupling == PressureCoupling::projection ? 1 : piso_.correctors;

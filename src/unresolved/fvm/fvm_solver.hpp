@@ -91,6 +91,8 @@ class FvmSolver {
   [[nodiscard]] double time_s() const { return time_s_; }
   [[nodiscard]] long steps() const { return steps_; }
   [[nodiscard]] const StepStats& last_stats() const { return stats_; }
+  /// The pressure equation's solver (its AMG set-up and reuse counts).
+  [[nodiscard]] const PressureSolver& pressure_solver() const { return pressure_; }
   [[nodiscard]] const FvmGrid& grid() const { return grid_; }
   [[nodiscard]] const PisoSettings& settings() const { return piso_; }
   [[nodiscard]] const FluidProperties& fluid() const { return fluid_; }

@@ -7,6 +7,7 @@
 #include <HYPRE_parcsr_ls.h>
 #include <_hypre_parcsr_mv.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -35,9 +36,20 @@ void* make_vector(MPI_Comm comm, int rows) {
   return v;
 }
 
+/// The diagonal of a CSR matrix (zero where a row has none).
+std::vector<double> diagonal_of(const CsrMatrix& a) {
+  std::vector<double> d(static_cast<std::size_t>(a.rows), 0.0);
+  for (int r = 0; r < a.rows; ++r) {
+    for (int q = a.row_ptr[static_cast<std::size_t>(r)]; q < a.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
+      if (a.cols[static_cast<std::size_t>(q)] == r) d[static_cast<std::size_t>(r)] = a.values[static_cast<std::size_t>(q)];
+    }
+  }
+  return d;
+}
+
 }  // namespace
 
-PressureSolver::PressureSolver(MPI_Comm comm) : comm_(comm) {
+PressureSolver::PressureSolver(MPI_Comm comm, AmgReuse reuse) : comm_(comm), reuse_(reuse) {
   int initialised = 0;
   MPI_Initialized(&initialised);
   if (initialised == 0) throw std::logic_error("PressureSolver: MPI_Init must be called before using hypre");
@@ -55,6 +67,37 @@ void PressureSolver::destroy() {
 }
 
 void PressureSolver::set_matrix(const CsrMatrix& a) {
+  if (can_reuse(a)) {
+    update_values(a);
+    ++reuses_;
+    fresh_ = false;
+    return;
+  }
+  build(a);
+}
+
+bool PressureSolver::can_reuse(const CsrMatrix& a) const {
+  if (!reuse_.enabled || pcg_ == nullptr || stale_ || hypre_position_.empty()) return false;
+  if (a.rows != a_.rows || a.row_ptr != a_.row_ptr || a.cols != a_.cols) return false;
+  const std::vector<double> d = diagonal_of(a);
+  for (std::size_t r = 0; r < d.size(); ++r) {
+    const double d0 = setup_diagonal_[r];
+    if (std::abs(d[r] - d0) > reuse_.max_diagonal_change * std::abs(d0)) return false;
+  }
+  return true;
+}
+
+void PressureSolver::update_values(const CsrMatrix& a) {
+  void* object = nullptr;
+  HYPRE_IJMatrixGetObject(as_matrix(ij_matrix_), &object);
+  hypre_CSRMatrix* diag = hypre_ParCSRMatrixDiag(static_cast<hypre_ParCSRMatrix*>(object));
+  HYPRE_Complex* data = hypre_CSRMatrixData(diag);
+  const std::size_t nnz = a.values.size();
+  for (std::size_t q = 0; q < nnz; ++q) data[hypre_position_[q]] = a.values[q];
+  a_.values = a.values;
+}
+
+void PressureSolver::build(const CsrMatrix& a) {
   destroy();
   a_ = a;
   const int n = a.rows;
@@ -110,6 +153,32 @@ void PressureSolver::set_matrix(const CsrMatrix& a) {
   HYPRE_IJVectorGetObject(as_vector(ij_x_), &xo);
   HYPRE_ParCSRPCGSetup(pcg, static_cast<HYPRE_ParCSRMatrix>(object), static_cast<HYPRE_ParVector>(bo),
                        static_cast<HYPRE_ParVector>(xo));
+  ++setups_;
+  fresh_ = true;
+  stale_ = false;
+  fresh_iterations_ = 0;
+  setup_diagonal_ = diagonal_of(a);
+  // Map each CSR entry to its place in hypre's diagonal block (hypre puts the diagonal first in each row). With
+  // entries in an off-diagonal block (several ranks) the values are not all local: no reuse.
+  hypre_position_.clear();
+  auto* par = static_cast<hypre_ParCSRMatrix*>(object);
+  if (hypre_CSRMatrixNumNonzeros(hypre_ParCSRMatrixOffd(par)) != 0) return;
+  const hypre_CSRMatrix* diag = hypre_ParCSRMatrixDiag(par);
+  const HYPRE_Int* hi = hypre_CSRMatrixI(diag);
+  const HYPRE_Int* hj = hypre_CSRMatrixJ(diag);
+  const auto first = static_cast<int>(hypre_ParCSRMatrixFirstColDiag(par));
+  std::vector<int> position(a.values.size(), -1);
+  for (int r = 0; r < n; ++r) {
+    for (HYPRE_Int h = hi[r]; h < hi[r + 1]; ++h) {
+      for (int q = a.row_ptr[static_cast<std::size_t>(r)]; q < a.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
+        if (a.cols[static_cast<std::size_t>(q)] == static_cast<int>(hj[h]) + first) position[static_cast<std::size_t>(q)] = static_cast<int>(h);
+      }
+    }
+  }
+  for (const int q : position) {
+    if (q < 0) return;   // an entry hypre dropped or moved (it keeps explicit zeros, but be safe): no reuse
+  }
+  hypre_position_ = std::move(position);
 }
 
 int PressureSolver::solve(const std::vector<double>& b, std::vector<double>& x, const SolveTolerance& tol) {
@@ -148,6 +217,11 @@ int PressureSolver::solve(const std::vector<double>& b, std::vector<double>& x, 
   HYPRE_PCGGetFinalRelativeResidualNorm(as_solver(pcg_), &final_res);
   std::memcpy(x.data(), vector_data(ij_x_), sizeof(double) * static_cast<std::size_t>(n));
   HYPRE_ClearAllErrors();
+  if (fresh_) {
+    fresh_iterations_ = std::max(fresh_iterations_, static_cast<int>(iterations));
+  } else if (iterations > reuse_.max_iteration_growth * fresh_iterations_ + reuse_.iteration_slack) {
+    stale_ = true;   // the next set_matrix() builds a new hierarchy
+  }
   for (int r = 0; r < n; ++r) {
     if (!std::isfinite(x[static_cast<std::size_t>(r)])) {
       throw hs::common::NumericalError("FVM pressure solve produced a non-finite value (check the time step and inputs)");

@@ -24,12 +24,29 @@ struct SolveTolerance {
   int max_iterations = 1000;
 };
 
+/// When set_matrix() may keep the AMG hierarchy of an earlier matrix as the preconditioner of a new one with the
+/// same pattern (the CFD-DEM pressure matrix: its coefficients eps^2 / A move with the particles every step, its
+/// pattern never). PCG still stops on the new matrix's own residual, so the solution meets the same tolerance;
+/// only the iteration count can grow as the hierarchy ages. Rebuilt when either bound below is passed.
+struct AmgReuse {
+  bool enabled = true;
+  // A solve with a reused hierarchy took more than growth x (the most iterations of a solve with a fresh one) +
+  // slack: the next set_matrix() rebuilds. 1.5: each extra PCG iteration costs about 1/10 of a BoomerAMG set-up
+  // on the 7-point Laplacian (measured, docs/cfd-dem.md), so a few are cheaper than a set-up every step.
+  double max_iteration_growth = 1.5;
+  int iteration_slack = 2;
+  // Largest relative change of a diagonal entry against the matrix the hierarchy was built on: beyond it the
+  // coarse operators no longer resemble the fine one (the void fraction of a cell halved, say) and it is rebuilt
+  // whatever the iterations say.
+  double max_diagonal_change = 0.5;
+};
+
 /// PCG + BoomerAMG (hypre). The AMG hierarchy is built by set_matrix() and reused by every solve until
-/// the next set_matrix(): the pressure matrix only changes when the void fraction or Ksl change.
+/// the next set_matrix(), and by later matrices of the same pattern as AmgReuse allows.
 /// Needs MPI to be initialised (the hemoscale executable and the fvm tests do it).
 class PressureSolver {
  public:
-  explicit PressureSolver(MPI_Comm comm = MPI_COMM_WORLD);
+  explicit PressureSolver(MPI_Comm comm = MPI_COMM_WORLD, AmgReuse reuse = {});
   ~PressureSolver();
   PressureSolver(const PressureSolver&) = delete;
   PressureSolver& operator=(const PressureSolver&) = delete;
@@ -38,12 +55,28 @@ class PressureSolver {
   /// Solves A x = b from the initial guess in x; returns the number of PCG iterations.
   int solve(const std::vector<double>& b, std::vector<double>& x, const SolveTolerance& tol);
   [[nodiscard]] const CsrMatrix& matrix() const { return a_; }
+  /// BoomerAMG set-ups so far, and set_matrix() calls that kept the hierarchy.
+  [[nodiscard]] long setups() const { return setups_; }
+  [[nodiscard]] long reuses() const { return reuses_; }
 
  private:
   void destroy();
+  void build(const CsrMatrix& a);
+  /// Whether a's pattern is the hierarchy's and neither AmgReuse bound is passed.
+  [[nodiscard]] bool can_reuse(const CsrMatrix& a) const;
+  /// Writes a's values into the hypre matrix in place (same pattern).
+  void update_values(const CsrMatrix& a);
 
   MPI_Comm comm_;
+  AmgReuse reuse_;
   CsrMatrix a_;
+  std::vector<double> setup_diagonal_;   // diagonal of the matrix the hierarchy was built on
+  std::vector<int> hypre_position_;      // where each CSR entry sits in hypre's diagonal block (empty: no reuse)
+  int fresh_iterations_ = 0;             // most iterations of a solve while the hierarchy was fresh
+  bool fresh_ = false;                   // the matrix now set is the one the hierarchy was built on
+  bool stale_ = false;                   // a reused hierarchy passed the iteration bound
+  long setups_ = 0;
+  long reuses_ = 0;
   void* ij_matrix_ = nullptr;   // HYPRE_IJMatrix (hypre types stay out of this header)
   void* ij_b_ = nullptr;
   void* ij_x_ = nullptr;
