@@ -8,6 +8,7 @@
 #include <functional>
 #include <iterator>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -45,10 +46,13 @@ std::string read_text(const fs::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-/// What decides a run's result: the case file's text, the closure files' text and --quick (the build's solver is
-/// not in it: a rebuilt binary keeps an archived run, as the Pries archive does).
-std::string fingerprint(const fs::path& case_file, const hs::unresolved::OpenGeometryConfig& c, bool quick) {
-  std::string text = read_text(case_file);
+/// What decides a run's result: the case file's values with every default filled in (its resolved table: a comment
+/// edited does not count), the closure files' text and --quick (the build's solver is not in it: a rebuilt binary
+/// keeps an archived run, as the Pries archive does).
+std::string fingerprint(const hs::common::ConfigFile& file, const hs::unresolved::OpenGeometryConfig& c, bool quick) {
+  std::ostringstream values;
+  values << file.resolved();
+  std::string text = values.str();
   for (const auto* spec : {&c.model.drag, &c.model.lift, &c.model.deformation}) {
     if (spec->model == "expression") text += read_text(spec->file);
   }
@@ -66,7 +70,8 @@ std::unique_ptr<hs::common::ConfigFile> load_case(const fs::path& case_dir) {
 
 /// Runs one throat unless its folder holds a finished run with this fingerprint; returns what it did.
 std::string run_throat(const fs::path& case_dir, const fs::path& run_dir, bool quick) {
-  const std::string key = fingerprint(case_dir / "case.toml", hs::unresolved::parse_open_geometry(*load_case(case_dir), quick), quick);
+  const auto parsed = load_case(case_dir);
+  const std::string key = fingerprint(*parsed, hs::unresolved::parse_open_geometry(*parsed, quick), quick);
   const auto config = load_case(case_dir);   // parse_open_geometry finished the first one
   const fs::path stamp = fs::path(run_dir.string() + ".fingerprint");
   const bool exists = fs::exists(run_dir);

@@ -11,8 +11,8 @@
 namespace hs::study {
 
 /// Runs each throat into OUTPUT/throat-NNum (OUTPUT: --output, else cases/unresolved/stenosis/runs/study or
-/// study-quick). Resumable: a run whose fingerprint (OUTPUT/throat-NNum.fingerprint: the case file's and the
-/// closures' text, --quick) matches is kept when finished, resumed from its checkpoint when not; a run folder with
+/// study-quick). Resumable: a run whose fingerprint (OUTPUT/throat-NNum.fingerprint: the case file's values,
+/// the closures' text, --quick) matches is kept when finished, resumed from its checkpoint when not; a run folder with
 /// another fingerprint is refused (ConfigError: remove it). Then the plasma-only check of each throat at the case's
 /// dx and at dx / 2 (pressure drop, throat centreline velocity), OUTPUT/stenosis_table.csv and .json (a key per
 /// throat, throat_85um and throat_55um, with di_max, x_di_max_m, di_upstream, di_downstream, their errors, the
