@@ -198,8 +198,7 @@ int study_stenosis(const hs::common::StudyOptions& options) {
     csv.row(values);
     table[t.key] = row;
   }
-  // The mesh check (not --quick), when a folder throat-55um-fine holds the 55 um case on a finer grid (not committed:
-  // docs/stenosis.md).
+  // The mesh check (not --quick): throat-55um-fine, the 55 um case on a finer grid.
   if (!options.quick && fs::exists(cases / "throat-55um-fine") && table.contains("throat_55um")) {
     const nlohmann::json fine = run_and_measure(cases, out, "throat-55um-fine", false, checks);
     if (!fine.is_null()) {

@@ -34,7 +34,8 @@ TEST(StenosisStudy, CommittedThroatsAreTheResolvedProfileTenTimesLarger) {
   // The seed paper's section 4.4: section 3.2's channel "increased ten times in size". Equal to round-off (the case
   // files hold the numbers x10 as decimals).
   for (const auto& [resolved, throat] : {std::pair{"stenosis/case.toml", "throat-85um"},
-                                         std::pair{"stenosis/throat-5.5um/case.toml", "throat-55um"}}) {
+                                         std::pair{"stenosis/throat-5.5um/case.toml", "throat-55um"},
+                                         std::pair{"stenosis/throat-5.5um/case.toml", "throat-55um-fine"}}) {
     const auto big = resolved_profile(resolved).scaled(10.0);
     const auto shape = unresolved_shape(throat);
     const auto* tube = dynamic_cast<const hs::common::StenosedTube*>(shape.get());
