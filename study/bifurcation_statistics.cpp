@@ -14,17 +14,10 @@
 #include "analysis/histogram.hpp"
 #include "analysis/skewness_index.hpp"
 #include "analysis/steady_state.hpp"
+#include "study/series_statistics.hpp"
 
 namespace hs::study {
 namespace {
-
-using Rows = std::vector<std::vector<double>>;
-using RowFn = std::function<double(const std::vector<double>&)>;
-
-// A steady series' halves agree within 3 standard errors, or within 1% of their size for a nearly noiseless one (the
-// flow rates: the issue asks the fluid's balance to 0.1%, the split is reported to 2-3 digits).
-constexpr double kHalvesSigmas = 3.0;
-constexpr double kHalvesFloor = 0.01;
 
 /// summary.json results.study_layout.
 struct Layout {
@@ -46,80 +39,6 @@ struct Layout {
         inlets(j.at("inlets").get<std::vector<std::string>>()), fluid_stores(j.at("fluid_stores").get<bool>()),
         dt_s(j.at("dt_s").get<double>()) {}
 };
-
-class Columns {
- public:
-  explicit Columns(const std::vector<std::string>& names) {
-    for (std::size_t i = 0; i < names.size(); ++i) index_[names[i]] = i;
-  }
-  [[nodiscard]] bool has(const std::string& n) const { return index_.count(n) > 0; }
-  [[nodiscard]] std::size_t at(const std::string& n) const { return index_.at(n); }
-  [[nodiscard]] std::vector<double> series(const Rows& rows, const std::string& n) const {
-    std::vector<double> x;
-    const std::size_t c = at(n);
-    for (const auto& r : rows) x.push_back(r[c]);
-    return x;
-  }
-
- private:
-  std::map<std::string, std::size_t> index_;
-};
-
-/// Batch-means ratio: per batch of rows [start, end) the ratio of summed numerators to summed denominators; the mean
-/// is the whole window's ratio, the error the batch ratios' spread over sqrt(batches).
-hs::analysis::MeanWithError batch_ratio(const Rows& rows, std::size_t start, const RowFn& num, const RowFn& den) {
-  std::vector<double> n_all;
-  std::vector<double> d_all;
-  double n_sum = 0.0;
-  double d_sum = 0.0;
-  for (std::size_t i = start; i < rows.size(); ++i) {
-    n_all.push_back(num(rows[i]));
-    d_all.push_back(den(rows[i]));
-    n_sum += n_all.back();
-    d_sum += d_all.back();
-  }
-  hs::analysis::MeanWithError out{.mean = d_sum != 0.0 ? n_sum / d_sum : 0.0, .standard_error = 0.0, .batches = 0};
-  const std::size_t len = n_all.size() / kStudyBatches;
-  if (len == 0) return out;
-  std::vector<double> ratios;
-  const std::size_t off = n_all.size() - len * kStudyBatches;
-  for (int b = 0; b < kStudyBatches; ++b) {
-    double nb = 0.0;
-    double db = 0.0;
-    for (std::size_t i = 0; i < len; ++i) {
-      nb += n_all[off + static_cast<std::size_t>(b) * len + i];
-      db += d_all[off + static_cast<std::size_t>(b) * len + i];
-    }
-    ratios.push_back(db != 0.0 ? nb / db : 0.0);
-  }
-  out.standard_error = hs::analysis::batch_means(ratios, kStudyBatches).standard_error;
-  out.batches = kStudyBatches;
-  return out;
-}
-
-/// Where every monitored series has settled (MSER-5) and whether each is steady from the latest start on.
-nlohmann::json steady_block(const Columns& cols, const Rows& rows, const std::vector<std::string>& monitored, double dt) {
-  std::size_t start = 0;
-  bool all_found = true;
-  for (const auto& name : monitored) {
-    const auto s = hs::analysis::mser_truncation(cols.series(rows, name));
-    all_found = all_found && s.found;
-    start = std::max(start, s.start);
-  }
-  nlohmann::json list = nlohmann::json::array();
-  bool all_agree = true;
-  for (const auto& name : monitored) {
-    const auto x = cols.series(rows, name);
-    const auto s = hs::analysis::mser_truncation(x);
-    const auto h = hs::analysis::halves_agree(x, start, kHalvesSigmas, kStudyBatches / 2, kHalvesFloor);
-    all_agree = all_agree && h.agree;
-    list.push_back({{"name", name}, {"found", s.found}, {"start_step", s.start}, {"first_half_mean", h.first_mean},
-                    {"second_half_mean", h.second_mean}, {"combined_error", h.combined_error}, {"agree", h.agree}});
-  }
-  return {{"method", "MSER-5 start per series (White 1997), window after the latest; halves within 3 SE or 1%"},
-          {"all_found", all_found}, {"all_agree", all_agree}, {"start_step", start},
-          {"start_time_s", static_cast<double>(start) * dt}, {"window_steps", rows.size() - start}, {"series", list}};
-}
 
 }  // namespace
 
@@ -235,25 +154,7 @@ nlohmann::json bifurcation_statistics(const nlohmann::json& layout, const std::v
   std::vector<double> di_centres;
   for (int i = 0; i < info.di_bins; ++i) di_centres.push_back(info.di_lo + (i + 0.5) * (info.di_hi - info.di_lo) / info.di_bins);
   j["di"]["bin_centres"] = di_centres;
-  // Conservation: the fluid over the window (what the domain stores counted when it may), the cells over the run.
-  double in = 0.0;
-  double out = 0.0;
-  double cells_in = 0.0;
-  double cells_out = 0.0;
-  for (const auto& c : columns) {
-    if (c.size() < 16 || c.substr(c.size() - 16) != "_fluid_flux_m3_s") continue;
-    const std::string n = c.substr(0, c.size() - 16);
-    const bool inlet = std::find(info.inlets.begin(), info.inlets.end(), n) != info.inlets.end();
-    for (std::size_t s = start; s < rows.size(); ++s) (inlet ? in : out) += rows[s][cols.at(c)];
-    cells_in += rows.back()[cols.at(n + "_cells_in")];
-    cells_out += rows.back()[cols.at(n + "_cells_out")];
-  }
-  const std::size_t plasma = cols.at("plasma_volume_m3");
-  const double stored = info.fluid_stores ? rows.back()[plasma] - rows[start > 0 ? start - 1 : 0][plasma] : 0.0;
-  const double steps = static_cast<double>(rows.size() - start);
-  j["conservation"] = {{"fluid_in_m3_s", in / steps}, {"fluid_out_m3_s", out / steps},
-                       {"fluid_balance_pct", in != 0.0 ? 100.0 * (out + stored / info.dt_s - in) / in : 0.0},
-                       {"cells_in", cells_in}, {"cells_out", cells_out}, {"cells_present", rows.back()[cols.at("cells_present")]}};
+  j["conservation"] = conservation_block(cols, rows, start, info.inlets, info.fluid_stores, info.dt_s);
   return j;
 }
 
@@ -262,30 +163,13 @@ void check_bifurcation_study(const nlohmann::json& s, bool quick, const std::str
     checks.expect(prefix + "enough samples for the statistics", false, fmt::format("fewer than {} steps", 2 * kStudyBatches));
     return;
   }
-  const auto& c = s["conservation"];
-  const double in = c["cells_in"].get<double>();
-  const double out = c["cells_out"].get<double>();
-  const double present = c["cells_present"].get<double>();
-  checks.expect(prefix + "cells in at the openings = cells out + cells present (exact)", in == out + present,
-                fmt::format("{:.0f} in, {:.0f} out, {:.0f} present", in, out, present));
+  check_cell_count(s["conservation"], prefix, checks);
   if (quick) {
     checks.skip(prefix + "steady state, steady window, fluid balance", "--quick: the channels have not filled yet");
     return;
   }
-  const auto& st = s["steady"];
-  std::string unsettled;
-  std::string unsteady;
-  for (const auto& x : st["series"]) {
-    if (!x["found"].get<bool>()) unsettled += fmt::format(" {}", x["name"].get<std::string>());
-    if (!x["agree"].get<bool>()) unsteady += fmt::format(" {} ({:.4g} then {:.4g} +- {:.2g})", x["name"].get<std::string>(),
-                                                         x["first_half_mean"].get<double>(), x["second_half_mean"].get<double>(),
-                                                         x["combined_error"].get<double>());
-  }
-  checks.expect(prefix + "steady state detected (MSER-5 start in the first half of every monitored series)", unsettled.empty(),
-                unsettled.empty() ? fmt::format("from t = {:.4g} s", st["start_time_s"].get<double>()) : "not settled:" + unsettled);
-  checks.expect(prefix + "steady over the window (halves within 3 SE or 1%)", unsteady.empty(),
-                unsteady.empty() ? fmt::format("{} steps", st["window_steps"].get<long>()) : "drifting:" + unsteady);
-  const double balance = c["fluid_balance_pct"].get<double>();
+  check_steady_block(s["steady"], prefix, checks);
+  const double balance = s["conservation"]["fluid_balance_pct"].get<double>();
   checks.expect(prefix + "fluid in = daughter + outlet over the window", std::abs(balance) <= 0.1,
                 fmt::format("{:+.4f}% (band +-0.1%)", balance));
 }

@@ -9,11 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "common/check_list.hpp"
+#include "study/series_statistics.hpp"
 
 namespace hs::study {
-
-/// Batches per window for every standard error (batch means, analysis/batch_means.hpp).
-inline constexpr int kStudyBatches = 10;
 
 /// The statistics of one run from its rows (columns as BifurcationStudyMeasurement::columns()) and `layout`
 /// (summary.json results.study_layout, unresolved/cases/bifurcation_study_measurement.hpp): "steady" (the MSER-5 start of

@@ -17,6 +17,10 @@ struct ConstrictionProfile {
   [[nodiscard]] double half_width(double s_m) const;
   /// dh/ds, for the first-order distance estimate (h - r) / sqrt(1 + h'^2).
   [[nodiscard]] double slope(double s_m) const;
+  /// The same shape `factor` times larger in every length (the seed paper's section 4.4 takes section 3.2's x10).
+  [[nodiscard]] ConstrictionProfile scaled(double factor) const {
+    return {open_half_width_m * factor, throat_half_width_m * factor, length_m * factor};
+  }
   /// Throws std::invalid_argument unless 0 < throat <= open and length > 0.
   void check() const;
 };

@@ -22,6 +22,12 @@ class StenosedTube final : public Shape {
   /// First-order distance (r(s) - rho)/sqrt(1 + r'(s)^2): exact in the straight parts, sign exact everywhere.
   [[nodiscard]] double signed_distance(const Vec3& p_m) const override;
   [[nodiscard]] Box3 bounds() const override;
+  [[nodiscard]] const StenosedTubeSpec& spec() const { return spec_; }
+  /// The narrowing in the tube's own coordinate s (distance along the axis from start_m, throat at
+  /// constriction_centre_m): the wall radius is profile().half_width(s - constriction_centre_m).
+  [[nodiscard]] const ConstrictionProfile& profile() const { return profile_; }
+  /// Wall radius at distance s_m along the axis from start_m.
+  [[nodiscard]] double radius_at(double s_m) const { return profile_.half_width(s_m - spec_.constriction_centre_m); }
 
  private:
   StenosedTubeSpec spec_;

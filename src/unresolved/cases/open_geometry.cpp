@@ -17,6 +17,7 @@
 #include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/cases/step_limits.hpp"
+#include "unresolved/cases/stenosis_study_measurement.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/cell_injector.hpp"
 
@@ -71,8 +72,9 @@ void require_pressure_outlet(hs::common::ConfigSection openings, const std::vect
   openings.section(last_outlet).fail("flow_fraction", why);
 }
 
-/// The case's measurement; with [study] the bifurcation study's on top of it (bifurcation_study_measurement.hpp).
+/// The case's measurement; with [study] the bifurcation or stenosis study's on top of it (*_study_measurement.hpp).
 std::unique_ptr<CfdDemMeasurement> make_measurement(const OpenGeometryConfig& c) {
+  if (c.stenosis_study) return std::make_unique<StenosisStudyMeasurement>(c, *c.stenosis_study);
   if (c.study) return std::make_unique<BifurcationStudyMeasurement>(c, *c.study);
   return std::make_unique<OpenGeometryMeasurement>(c);
 }
@@ -119,7 +121,11 @@ OpenGeometryConfig parse_open_geometry(hs::common::ConfigFile& file, bool quick)
   c.quick = quick;
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
   c.vtk_every_s = root.section_or_empty("output").positive_or("vtk_every_s", 0.0);   // 0 (absent): final frame only
-  c.study = parse_bifurcation_study(root, *c.shape);
+  if (dynamic_cast<const hs::common::StenosedTube*>(c.shape.get()) != nullptr) {
+    c.stenosis_study = parse_stenosis_study(root, *c.shape);
+  } else {
+    c.study = parse_bifurcation_study(root, *c.shape);
+  }
   file.finish();
   return c;
 }

@@ -18,6 +18,7 @@
 #include "unresolved/cases/bifurcation_study.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/coupling_model.hpp"
+#include "unresolved/cases/stenosis_study.hpp"
 #include "unresolved/dem/particle_params.hpp"
 
 namespace hs::unresolved {
@@ -42,6 +43,7 @@ struct OpenGeometryConfig {
   double vtk_every_s = 0.0;
   bool quick = false;
   std::optional<BifurcationStudySpec> study;             // [study]: the bifurcation study's measurement on top
+  std::optional<StenosisStudySpec> stenosis_study;       // [study] on a stenosed tube: the stenosis study's instead
 
   [[nodiscard]] long steps() const;
   /// Summed flow rate of the inlets (plasma, as the conditions prescribe it), m^3/s.

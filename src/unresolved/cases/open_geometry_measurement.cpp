@@ -167,7 +167,9 @@ nlohmann::json OpenGeometryMeasurement::summary(const CfdDemSolvers& run, const 
   const long first = static_cast<long>(c_.average_from_fraction * static_cast<double>(total));
   const long middle = first + (total - first) / 2;
   bool exact = true;
-  for (const auto& x : rows) exact = exact && x[x.size() - 2] == 0.0;
+  // By its own index, not from the row's end: a study's measurement appends its columns after these.
+  const std::size_t bookkeeping = kFirstOpening + kPerOpening * openings_.size() + 1;
+  for (const auto& x : rows) exact = exact && x[bookkeeping] == 0.0;
   double injected = 0.0;
   double owed = 0.0;
   double fluid_in = 0.0;
