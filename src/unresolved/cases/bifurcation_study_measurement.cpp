@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The bifurcation study's per-step counts.
 #include "unresolved/cases/bifurcation_study_measurement.hpp"
+#include "unresolved/cases/closure_validity_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -90,19 +91,7 @@ nlohmann::json BifurcationStudyMeasurement::summary(const CfdDemSolvers& run, co
                                   {"di_threshold", spec_.di_threshold}, {"inlets", inlets_},
                                   {"fluid_stores", fluid_stores_}, {"dt_s", run.fluid().settings().dt_s}};
   // How often the closures saw inputs outside their validity box (clamped there): issue 22's acceptance asks it.
-  nlohmann::json validity = nlohmann::json::object();
-  const CouplingClosures& cl = run.coupling().closures();
-  const auto usage = [&validity](const char* what, const hs::closures::Closure* c) {
-    if (c == nullptr) return;
-    const long n = c->evaluations();
-    validity[what] = {{"evaluations", n}, {"outside_validity", c->outside_validity()},
-                      {"outside_share", n > 0 ? static_cast<double>(c->outside_validity()) / static_cast<double>(n) : 0.0},
-                      {"report", c->usage_report()}};
-  };
-  usage("drag", cl.drag.get());
-  usage("lift", cl.lift.get());
-  usage("deformation", cl.deformation.get());
-  j["results"]["closure_validity"] = validity;   // this run's evaluations (a resumed run: since the resume)
+  j["results"]["closure_validity"] = closure_validity_report(run.coupling().closures());
   return j;
 }
 

@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 
 #include "common/dimensionless_groups.hpp"
+#include "unresolved/coupling/shear_rate.hpp"
+#include "unresolved/cases/closure_validity_report.hpp"
 
 namespace hs::unresolved {
 namespace {
@@ -18,18 +20,6 @@ using hs::common::Vec3;
 
 constexpr std::size_t kPerBin = 8;
 constexpr std::size_t kCells = 0, kDiSum = 1, kDiSq = 2, kUx = 3, kRbc = 4, kOutDi = 5, kOutAny = 6, kWallShear = 7;
-
-/// sqrt(2 S:S) of a velocity gradient g[a][b] = du_a/dx_b, 1/s (the coupling's shear rate).
-double shear_rate(const std::array<Vec3, 3>& g) {
-  double s2 = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    for (int b = 0; b < 3; ++b) {
-      const double s = 0.5 * (g[static_cast<std::size_t>(a)][b] + g[static_cast<std::size_t>(b)][a]);
-      s2 += s * s;
-    }
-  }
-  return std::sqrt(2.0 * s2);
-}
 
 /// The closures' inputs at owned particle i, as CfdDemCoupling::inputs forms them (cfd_dem_coupling.cpp: slip from
 /// the fluid velocity at the centre, shear rate of its gradient, R_c and u_av from the channel frame).
@@ -236,19 +226,7 @@ nlohmann::json StenosisStudyMeasurement::summary(const CfdDemSolvers& run, const
       {"upstream_window_m", spec_.upstream_window_m}, {"downstream_window_m", spec_.downstream_window_m},
       {"inlets", inlets_}, {"fluid_stores", fluid_stores_}, {"dt_s", run.fluid().settings().dt_s},
       {"dx_m", run.grid().dx_m()}, {"dynamic_viscosity_Pa_s", run.fluid().fluid().density_kg_m3 * run.fluid().fluid().kinematic_viscosity_m2_s}};
-  nlohmann::json validity = nlohmann::json::object();
-  const CouplingClosures& cl = run.coupling().closures();
-  const auto usage = [&validity](const char* what, const hs::closures::Closure* c) {
-    if (c == nullptr) return;
-    const long n = c->evaluations();
-    validity[what] = {{"evaluations", n}, {"outside_validity", c->outside_validity()},
-                      {"outside_share", n > 0 ? static_cast<double>(c->outside_validity()) / static_cast<double>(n) : 0.0},
-                      {"report", c->usage_report()}};
-  };
-  usage("drag", cl.drag.get());
-  usage("lift", cl.lift.get());
-  usage("deformation", cl.deformation.get());
-  j["results"]["closure_validity"] = validity;
+  j["results"]["closure_validity"] = closure_validity_report(run.coupling().closures());
   j["results"]["hemolysis"] = {
       {"model", "Giersiepen et al. 1990: D = C t^alpha tau^beta (%), linearised along the path (Garon & Farinas 2004): "
                 "D = C (sum tau^(beta/alpha) dt)^alpha, tau = mu sqrt(2 S:S) of the plasma at the cell centre"},

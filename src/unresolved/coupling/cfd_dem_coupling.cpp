@@ -12,6 +12,7 @@
 
 #include "common/dimensionless_groups.hpp"
 #include "common/errors.hpp"
+#include "unresolved/coupling/shear_rate.hpp"
 
 namespace hs::unresolved {
 namespace {
@@ -28,17 +29,6 @@ Vec3 particle_velocity(const ParticleStore& p, std::size_t i) {
   return {p.velocity_m_s()[0][i], p.velocity_m_s()[1][i], p.velocity_m_s()[2][i]};
 }
 
-/// Shear rate sqrt(2 S:S) of a velocity gradient g[a][b] = du_a/dx_b, 1/s.
-double shear_rate(const std::array<Vec3, 3>& g) {
-  double s2 = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    for (int b = 0; b < 3; ++b) {
-      const double s = 0.5 * (g[static_cast<std::size_t>(a)][b] + g[static_cast<std::size_t>(b)][a]);
-      s2 += s * s;
-    }
-  }
-  return std::sqrt(2.0 * s2);
-}
 
 }  // namespace
 
