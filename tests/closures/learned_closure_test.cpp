@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -15,7 +16,9 @@ namespace hc = hs::closures;
 namespace {
 
 fs::path drag_file() {
-  const fs::path p = fs::temp_directory_path() / "hs_learned_drag.toml";
+  // One file per test: CTest runs the tests of this binary in parallel, and two writing one file race.
+  const fs::path p = fs::temp_directory_path() /
+                     (std::string("hs_learned_drag_") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".toml");
   std::ofstream(p) << "name = \"cd\"\nkind = \"drag\"\noutput = \"C_d\"\nexpression = \"24/re_p*(1 + 0.5*di)\"\n"
                       "[variables]\nre_p = \"Re_p\"\ndi = \"DI\"\n[validity]\nre_p = [0.01, 0.12]\ndi = [0.1, 0.5]\n";
   return p;
