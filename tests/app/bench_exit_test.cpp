@@ -120,3 +120,20 @@ TEST(BenchExit, FvmMissesItsTargetAgainstAFasterPeerAndMeetsItAgainstASlowerOne)
   EXPECT_EQ(met.code, 0) << met.output;
   EXPECT_TRUE(read_json(slow / "fvm.json").at("passed").get<bool>());
 }
+
+TEST(BenchExit, ResolvedJudgesItsCampaignProjectionBothWays) {
+  // `bench resolved` in full (three 2 ms runs of the campaign's tube-drag case, ~11 s of one core; --quick skips the
+  // target): the projected campaign hours against issue #27's 4.7 h. --tighten 100 asks for 0.047 h, two jobs at once
+  // over the campaign's ~1.4e7 lattice steps: 25 us a step of the 50^3-node box, 0.2 ns a node, whose D3Q19 update
+  // moves ~300 bytes (1.5 TB/s, beyond any CPU's memory): exit 1. --tighten 0.001 allows 4700 h, 165x the 28.4 h
+  // measured on this loaded machine (2026-12-02): exit 0.
+  const fs::path dir = fs::temp_directory_path() / "hs_bench_exit_resolved";
+  fs::remove_all(dir);
+  const auto missed = run("bench resolved --tighten 100 --json " + (dir / "missed.json").string());
+  EXPECT_EQ(missed.code, 1) << missed.output;
+  EXPECT_NE(missed.output.find("FAILED  campaign_hours_projected"), std::string::npos) << missed.output;
+  EXPECT_EQ(read_json(dir / "missed.json").at("checks_failed").get<int>(), 1);
+  const auto met = run("bench resolved --tighten 0.001 --json " + (dir / "met.json").string());
+  EXPECT_EQ(met.code, 0) << met.output;
+  EXPECT_TRUE(read_json(dir / "met.json").at("passed").get<bool>());
+}
