@@ -128,22 +128,54 @@ std::filesystem::path beside(const std::filesystem::path& json, const std::strin
   return json.parent_path() / (json.stem().string() + suffix);
 }
 
+/// What one run searches: equations, noise levels, seeds and configurations (the full table, or --quick's subset).
+struct Plan {
+  std::vector<hsr::FeynmanEquation> table;
+  std::string table_sha;
+  std::vector<double> noise_levels{0.0, 0.001, 0.01};
+  std::vector<std::uint64_t> seeds{1, 2, 3};
+  std::vector<Configuration> configs;
+};
+
+Plan make_plan(bool quick, int threads) {
+  Plan p;
+  p.table = hsr::read_feynman_table(kTable);
+  p.table_sha = hs::closures::sha256_file(kTable).substr(0, 16);
+  if (quick) {   // every tenth equation, two noise levels, one seed: a smoke test of the whole path
+    std::vector<hsr::FeynmanEquation> every_tenth;
+    for (std::size_t i = 0; i < p.table.size(); i += 10) every_tenth.push_back(p.table[i]);
+    p.table = std::move(every_tenth);
+    p.noise_levels = {0.0, 0.01};
+    p.seeds = {1};
+  }
+  p.configs = configurations(quick, threads);
+  return p;
+}
+
 }  // namespace
+
+std::vector<FeynmanSearchId> feynman_searches(bool quick) {
+  const Plan plan = make_plan(quick, 1);   // the thread count is not part of a search's fingerprint
+  std::vector<FeynmanSearchId> out;
+  for (const std::uint64_t seed : plan.seeds) {
+    for (const double noise : plan.noise_levels) {
+      for (const auto& c : plan.configs) {
+        const std::string fp = fingerprint(c, plan.table_sha);
+        for (const auto& eq : plan.table) out.push_back({run_key(c.name, eq.id, noise, seed), fp, c.name, eq.id, noise, seed});
+      }
+    }
+  }
+  return out;
+}
 
 int run_feynman_bench(const hs::common::TaskOptions& options) {
   const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  std::vector<hsr::FeynmanEquation> table = hsr::read_feynman_table(kTable);
-  const std::string table_sha = hs::closures::sha256_file(kTable).substr(0, 16);
-  std::vector<double> noise_levels{0.0, 0.001, 0.01};
-  std::vector<std::uint64_t> seeds{1, 2, 3};
-  if (options.quick) {   // every tenth equation, two noise levels, one seed: a smoke test of the whole path
-    std::vector<hsr::FeynmanEquation> every_tenth;
-    for (std::size_t i = 0; i < table.size(); i += 10) every_tenth.push_back(table[i]);
-    table = std::move(every_tenth);
-    noise_levels = {0.0, 0.01};
-    seeds = {1};
-  }
-  const auto configs = configurations(options.quick, threads);
+  const Plan plan = make_plan(options.quick, threads);
+  const auto& table = plan.table;
+  const std::string& table_sha = plan.table_sha;
+  const auto& noise_levels = plan.noise_levels;
+  const auto& seeds = plan.seeds;
+  const auto& configs = plan.configs;
 
   // The archive: one JSON line per finished search, keyed by configuration, equation, noise and seed.
   std::map<std::string, nlohmann::json> done;

@@ -2,6 +2,10 @@
 // The AI-Feynman recovery benchmark: the whole table, three noise levels, several seeds, as `hemoscale fit` runs.
 #pragma once
 
+#include <cstdint>
+#include <string>
+#include <vector>
+
 #include "common/case_request.hpp"
 
 namespace hs::bench {
@@ -12,5 +16,20 @@ namespace hs::bench {
 /// .runs.jsonl archive and a rerun skips what it holds (hours of work resume after any interruption); the
 /// per-equation table goes to FILE's _equations.csv.
 int run_feynman_bench(const hs::common::TaskOptions& options);
+
+/// One search of a run as its archive names it: a line of FILE.runs.jsonl with this key and fingerprint is reused
+/// instead of searching again.
+struct FeynmanSearchId {
+  std::string key;           // configuration|equation|noise|seed
+  std::string fingerprint;   // of everything that decides the search's result
+  std::string config;
+  std::string equation_id;
+  double noise = 0.0;
+  std::uint64_t seed = 0;
+};
+
+/// Every search `bench feynman` (quick or full) makes, in its order: what an archive must hold for a run to compute
+/// nothing (the failure-path test writes such an archive and checks the verdict on it).
+std::vector<FeynmanSearchId> feynman_searches(bool quick);
 
 }  // namespace hs::bench

@@ -37,6 +37,8 @@ TEST(BenchFeynman, AQuickRunArchivesEverySearchAndResumes) {
   const auto first = hs::test::run_hemoscale("bench feynman --quick --json " + json.string());
   ASSERT_EQ(first.code, 0) << first.output;   // --quick judges no target (all checks skipped)
   const nlohmann::json a = read_json(json);
+  EXPECT_EQ(a.at("checks_skipped").get<int>(), 2);   // both targets listed as skipped, never met
+  EXPECT_EQ(a.at("checks_failed").get<int>(), 0);
   // 10 equations (every tenth) x noise 0 and 0.01 x seed 1 x two configurations.
   EXPECT_EQ(lines(dir / "feynman.runs.jsonl"), 40u);
   EXPECT_EQ(a.at("searches_computed_this_run").get<int>(), 40);

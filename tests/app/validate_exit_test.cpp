@@ -93,6 +93,21 @@ TEST(ValidateExitCodes, PriesQuickChecksThePlasmaAndSkipsThePriesBand) {
   EXPECT_TRUE(says(narrow, "FAILED  D = 30 um, Ht_c 0.05, seed 1: plasma flow vs Poiseuille")) << narrow.output;
 }
 
+TEST(ValidateExitCodes, PriesWallVariantsFailOutsideTheirBand) {
+  // pries-wall and pries-wall-relative run the same table and checks with the Haberman-Sayre factor on the drag: each
+  // command's own exit path is shown failing. --quick checks the plasma-only run against Poiseuille (5.6% at 6 cells
+  // across; the wall factor does not enter it): a 100x narrower band (0.056%) is below the FVM's O(dx^2) error there
+  // (+3.7%), so both must exit 1 and name the entry.
+  for (const std::string name : {"pries-wall", "pries-wall-relative"}) {
+    const fs::path dir = fs::temp_directory_path() / ("hs_validate_" + name + "_narrow");
+    fs::remove_all(dir);
+    const Result r = run("validate " + name + " --quick --tighten 100 --json " + (dir / "narrow.json").string());
+    EXPECT_EQ(r.code, 1) << name << "\n" << r.output;
+    EXPECT_TRUE(says(r, "FAILED  D = 30 um, Ht_c 0.05, seed 1: plasma flow vs Poiseuille")) << name << "\n" << r.output;
+    EXPECT_TRUE(says(r, "not a validation")) << name << "\n" << r.output;   // --quick says it is not the Pries check
+  }
+}
+
 TEST(ValidateExitCodes, LiftTransferFailsWithTheCommittedClosure) {
   // The committed lift closure misses the 15 um tube's lift by 43-62% at r* 0.5-0.6 (docs/cfd-dem.md), outside 25%.
   const Result r = run("validate lift-transfer");

@@ -7,10 +7,12 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "common/errors.hpp"
 #include "resolved/cases/case_text_helpers.hpp"
+#include "resolved/cases/plate_cell_checks.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
 #include "resolved/measure/flow_mode.hpp"
@@ -200,6 +202,38 @@ TEST(TumblingPeriod, ReadsTheJefferyPeriodOfASyntheticOrbit) {
   // Linear interpolation of the crossing times is exact up to the curvature of phi(t) within one sample (1/200 T).
   EXPECT_NEAR(p.period_s, period, 1e-3 * period);
   EXPECT_EQ(to_string(classify_flow_mode(phi, phi)), "tumbling");
+}
+
+/// The shipped migration case's checks on a synthetic centroid track y(t) / H (samples every 1 ms from the release,
+/// the first after the spin-up); returns {failed, skipped}.
+std::pair<int, int> migration_verdict(const std::vector<double>& y_over_h) {
+  const PlateCellConfig c = read(shipped("migration"), PlateFlow::poiseuille);
+  const double spin_up_s = static_cast<double>(c.spin_up_steps) * c.numerics.dt_s;
+  std::vector<PlateCellSample> samples;
+  for (std::size_t i = 0; i < y_over_h.size(); ++i) {
+    PlateCellSample s;
+    s.time_s = spin_up_s + 1e-3 * static_cast<double>(i);
+    s.centroid_m = {0.0, y_over_h[i] * c.gap_m, 0.0};
+    samples.push_back(s);
+  }
+  const auto checks = plate_cell_checks(c, nlohmann::json::object(), samples);
+  return {checks.failed(), checks.skipped()};
+}
+
+TEST(MigrationCheck, PassesAMonotoneApproachAndFailsEveryOtherTrack) {
+  // The shipped case releases the cell at y0 = 0.3 H; dx = 1 um, H = 24 um: the jitter allowance is 0.1 dx = 0.0042 H.
+  const PlateCellConfig c = read(shipped("migration"), PlateFlow::poiseuille);
+  ASSERT_NEAR(c.initial_height, 0.3, 1e-12);
+  const double jitter = 0.1 * c.numerics.dx_m / c.gap_m;
+  // Shi et al. 2014: a deformable cell moves to the centreline without turning back (the --quick run: 0.30 -> 0.42 H).
+  EXPECT_EQ(migration_verdict({0.30, 0.33, 0.36, 0.39, 0.42}), std::make_pair(0, 0));
+  // Jitter inside the allowance on the way is not a turn back.
+  EXPECT_EQ(migration_verdict({0.30, 0.34, 0.34 - 0.5 * jitter, 0.38, 0.42}), std::make_pair(0, 0));
+  // Negative controls, each must fail: a cell that does not migrate (its centroid moved by its shape only), one that
+  // drifts to the wall, and one that turns back by more than the jitter before ending closer.
+  EXPECT_EQ(migration_verdict({0.30, 0.30 + 0.5 * jitter, 0.30 + 0.8 * jitter}).first, 1);
+  EXPECT_EQ(migration_verdict({0.30, 0.28, 0.26, 0.24}).first, 2);
+  EXPECT_EQ(migration_verdict({0.30, 0.36, 0.36 - 3.0 * jitter, 0.40}).first, 1);
 }
 
 }  // namespace

@@ -78,7 +78,25 @@ TEST(StenosisCli, QuickRunWritesTheDeformationSeriesAndTheGroups) {
   EXPECT_NEAR(summary["numerics"]["plasma_calibration"]["drive_m_s2"].get<double>() /
                   summary["numerics"]["plasma_calibration"]["drive_lubrication_m_s2"].get<double>(), 1.0, 0.25);
   EXPECT_FALSE(res["passed_stop_x"].get<bool>());
+  // --quick cannot reach the throat: the passage check is skipped and listed, never passed.
+  EXPECT_EQ(summary["checks_skipped"].get<int>(), 1) << summary["checks"].dump();
+  EXPECT_EQ(summary["checks_failed"].get<int>(), 0) << summary["checks"].dump();
   EXPECT_TRUE(fs::exists(out / "membrane.pvd"));
+}
+
+TEST(StenosisCli, ARunThatStopsBeforeTheThroatFailsThePassageCheck) {
+  // Negative control of the case's [check]: the same 2 ms as the --quick run, but as a full run (max_time_s cut from
+  // 0.4 s): released at x = 9 um, the cell is still upstream of the throat (15-35 um), far from stop_x_m = 105 um,
+  // so the passage must be checked, fail, and the run exit 1.
+  const auto dir = variant("short", "max_time_s = 0.4 ", "max_time_s = 0.002 ");
+  const auto out = dir / "out";
+  const hs::test::CliResult r = hs::test::run_hemoscale("run --quiet " + dir.string() + " --output " + out.string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAILED  the cell passes the throat"), std::string::npos) << r.output;
+  std::ifstream in(out / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["checks_failed"].get<int>(), 1) << summary["checks"].dump();
+  EXPECT_FALSE(summary["results"]["passed_stop_x"].get<bool>());
 }
 
 TEST(StenosisCli, StoppedAndResumedRunGivesTheUninterruptedTimeSeries) {

@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 
 #include "closures/register_builtin.hpp"
+#include "closures/stokes_drag.hpp"
 #include "closures/wall_correction.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
@@ -36,6 +38,26 @@ double haberman_sayre_1958(double lambda) {
   return num / den;
 }
 
+/// A deliberately wrong drag closure for the negative control: Stokes drag times `factor` (1.5: the issue's
+/// perturbation), so a check that only compares the code with itself would still pass.
+class ScaledStokesDrag final : public hs::closures::DragClosure {
+ public:
+  explicit ScaledStokesDrag(double factor) : DragClosure("stokes_scaled", stokes().validity()), factor_(factor) {}
+
+ private:
+  static const hs::closures::StokesDrag& stokes() {
+    static const hs::closures::StokesDrag law;
+    return law;
+  }
+  [[nodiscard]] double compute_drag_coefficient(const hs::closures::DragInputs& in) const override {
+    return factor_ * stokes().drag_coefficient(in);
+  }
+  [[nodiscard]] double compute_correction(const hs::closures::DragInputs& in) const override {
+    return factor_ * stokes().correction(in);
+  }
+  double factor_;
+};
+
 struct DragRun {
   double force_ratio;   // coupled drag beta_p (u_f - U) over -3 pi mu d_p U K_HS(d_p / D), mean of the last steps
   double fluid_ratio;   // u_f / U: the fluid velocity interpolated at the sphere centre over the sphere's velocity
@@ -51,7 +73,9 @@ struct DragRun {
 /// are off: they are separate terms of the split, the drag is what is compared. Re_p = d U / nu ~ 5e-4: Stokes
 /// drag (Schiller-Naumann would add 0.08%). No d(eps)/dt source: without a smoothing model its marker-crossing
 /// spikes make this single-sphere run oscillate (CouplingSettings::void_fraction_rate).
-DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, int cells_across = 10) {
+/// `closure_factor` != 1 replaces the Stokes closure by ScaledStokesDrag (negative control only).
+DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, int cells_across = 10,
+                     double closure_factor = 1.0) {
   const double u0 = 1e-4;
   const double length = 2.0 * diameter_m;
   const double r = 0.5 * diameter_m;
@@ -73,7 +97,11 @@ DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, in
   const double pull = stokes_hs * u0;
   dem.set_force_hook([pull](ParticleStore& p) { p.force_N()[2][0] += pull; });
   CouplingClosures closures;
-  closures.drag = hs::closures::make_drag_closure({.model = "stokes", .file = {}});
+  if (closure_factor == 1.0) {
+    closures.drag = hs::closures::make_drag_closure({.model = "stokes", .file = {}});
+  } else {
+    closures.drag = std::make_unique<ScaledStokesDrag>(closure_factor);
+  }
   CfdDemCoupling coupling(fluid, dem,
                           {.n_coupling = 100, .void_fraction_feedback = two_way, .two_way = two_way, .void_fraction_rate = false,
                            .pressure_force = false, .viscous_force = false, .axis = 2, .axis_point_m = {0, 0, 0},
@@ -97,6 +125,14 @@ DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, in
   return mean;
 }
 
+/// The one-way check against Haberman & Sayre: drag / (3 pi mu d_p U K_HS) = 1 and the terminal velocity U0 = 1e-4 m/s,
+/// both to 1e-9 (the DEM's relaxation exp(-t / 1.2 us) after 0.5 ms and round-off). Shared by the test and its
+/// negative control so that the control fails exactly this band.
+bool meets_haberman_sayre(const DragRun& run) {
+  return run.fluid_ratio == 0.0 && std::abs(run.force_ratio - 1.0) <= 1e-9 &&
+         std::abs(run.velocity_m_s - 1e-4) <= 1e-9 * 1e-4;
+}
+
 TEST(SphereInTube, DragLawWithWallCorrectionMatchesHabermanSayre) {
   // The unresolved drag law at the confinement of the tube: closure x K(d_p / D), evaluated by the coupling with the
   // interpolated fluid velocity, integrated by the DEM's exact drag step, in one-way coupling. The pull is the law's
@@ -109,7 +145,18 @@ TEST(SphereInTube, DragLawWithWallCorrectionMatchesHabermanSayre) {
     EXPECT_EQ(run.fluid_ratio, 0.0) << "D = " << d;
     EXPECT_NEAR(run.force_ratio, 1.0, 1e-9) << "D = " << d;
     EXPECT_NEAR(run.velocity_m_s, 1e-4, 1e-9 * 1e-4) << "D = " << d;   // terminal velocity F / (3 pi mu d_p K_HS)
+    EXPECT_TRUE(meets_haberman_sayre(run)) << "D = " << d;
   }
+}
+
+TEST(SphereInTube, NegativeControlADragClosureTimesOneAndAHalfFailsTheCheck) {
+  // Issue #30's negative control: the same one-way run with a drag closure 1.5x Stokes. The pull is still the law's,
+  // so the sphere settles at U0 / 1.5 and the drag per unit velocity is 1.5x Haberman & Sayre's: the check above
+  // must reject it (it is computed from the independently written K, not from the code's own wall factor).
+  const DragRun run = drag_on_axis(30e-6, false, false, 10, 1.5);
+  EXPECT_FALSE(meets_haberman_sayre(run));
+  EXPECT_NEAR(run.force_ratio, 1.5, 1e-6);             // the closure's factor, seen by the comparison with the law
+  EXPECT_NEAR(run.velocity_m_s, 1e-4 / 1.5, 1e-10);    // terminal velocity F / (1.5 x 3 pi mu d_p K_HS)
 }
 
 TEST(SphereInTube, TwoWayDragIsTheLawAtTheDisturbedVelocity) {
