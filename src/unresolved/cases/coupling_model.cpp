@@ -76,6 +76,8 @@ CouplingModel parse_coupling_model(hs::common::ConfigSection& coupling, const st
   } catch (const hs::common::ConfigError& e) {
     coupling.fail("suspension_viscosity", e.what());
   }
+  // The fields' smoothing length (diffusion_smoothing.hpp); up to 1 mm, far beyond any cell-scale footprint.
+  m.smoothing_length_m = coupling.number_in_or("smoothing_length_m", 0.0, 1e-3, 0.0);
   return m;
 }
 
@@ -95,6 +97,7 @@ void write_model_summary(const CouplingModel& m, nlohmann::json& j) {
   j["outside_validity"] = m.drag.outside == hs::closures::OutsideValidity::clamp ? "clamp" : "extrapolate";
   j["self_induced_correction"] = m.self_induced_correction;
   j["suspension_viscosity"] = suspension_viscosity_name(m.suspension_viscosity);
+  if (m.smoothing_length_m > 0.0) j["smoothing_length_m"] = m.smoothing_length_m;   // absent: none (old fingerprints hold)
 }
 
 }  // namespace hs::unresolved

@@ -21,6 +21,7 @@ struct CouplingModel {
   hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;   // confinement factor on the drag
   bool self_induced_correction = false;  // closures get u_f - M F (CouplingSettings::self_induced_correction)
   SuspensionViscosity suspension_viscosity = SuspensionViscosity::none;   // the cells' stress (suspension_viscosity.hpp)
+  double smoothing_length_m = 0.0;       // CouplingSettings::smoothing_length_m (0: none)
 };
 
 /// Closure spec from one string: a registered name ("stokes", "schiller_naumann", "saffman_mei", "none") or a
@@ -31,14 +32,14 @@ struct CouplingModel {
 
 /// Reads [coupling]: void_fraction_rate (false), drag (schiller_naumann; required), lift (none), deformation (none),
 /// outside_validity (clamp | extrapolate), wall_correction (none), self_induced_correction (false),
-/// suspension_viscosity (none). Each closure is created once to check it; a bad one is a ConfigError on its key.
+/// suspension_viscosity (none), smoothing_length_m (0). Each closure is created once to check it; a bad one is a ConfigError on its key.
 [[nodiscard]] CouplingModel parse_coupling_model(hs::common::ConfigSection& coupling, const std::filesystem::path& base_dir);
 
 /// The closures of the model, created (drag required; lift and deformation null for "none").
 [[nodiscard]] CouplingClosures make_closures(const CouplingModel& m);
 
 /// The model's names in summary.json: drag, lift, deformation (file path for closure files), wall_correction,
-/// outside_validity, self_induced_correction, suspension_viscosity.
+/// outside_validity, self_induced_correction, suspension_viscosity, smoothing_length_m.
 void write_model_summary(const CouplingModel& m, nlohmann::json& summary);
 
 }  // namespace hs::unresolved

@@ -141,7 +141,8 @@ CfdDemSetup open_geometry_setup(const OpenGeometryConfig& c) {
           .dem = {.params = c.particles, .domain = {.box = c.box, .periodic = {false, false, false}}, .time_step_s = c.dt_s / c.n_coupling},
           .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.model.void_fraction_rate,
                        .closure_frame = ClosureFrame::channel, .wall_correction = c.model.wall_correction,
-                       .suspension_viscosity = c.model.suspension_viscosity},
+                       .suspension_viscosity = c.model.suspension_viscosity,
+                       .smoothing_length_m = c.model.smoothing_length_m},
           .closures = make_closures(c.model)};
 }
 

@@ -52,6 +52,13 @@ CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSetting
     throw hs::common::ConfigError("coupling: the self-induced velocity correction is measured in a straight tube: it needs the tube frame");
   }
   if (settings_.closure_frame == ClosureFrame::channel) channel_ = std::make_unique<ChannelFrame>(fluid_);
+  if (settings_.smoothing_length_m < 0.0 || !std::isfinite(settings_.smoothing_length_m)) {
+    throw hs::common::ConfigError(fmt::format("coupling: smoothing length {} m must be >= 0 (0: no smoothing)",
+                                              settings_.smoothing_length_m));
+  }
+  if (settings_.smoothing_length_m > 0.0) {
+    smoothing_ = std::make_unique<DiffusionSmoothing>(fluid_.grid(), settings_.smoothing_length_m);
+  }
   if (settings_.self_induced_correction && !(settings_.tube_radius_m > 0.0)) {
     throw hs::common::ConfigError("coupling: the self-induced velocity correction needs the tube radius (tube_radius_m > 0)");
   }
@@ -218,6 +225,11 @@ void CfdDemCoupling::fill_fields() {
   if (refresh && settings_.void_fraction_feedback) {
     BlockField<double>& eps = fluid_.void_fraction();
     stats_.lost_solid_volume_m3 = map_.void_fraction(p, settings_.eps_min, eps);
+    if (smoothing_) {   // the solid fraction is what the particles put on the grid: smooth it, conserved
+      for (double& e : eps.data()) e = 1.0 - e;
+      smoothing_->smooth(eps);
+      for (double& e : eps.data()) e = 1.0 - e;
+    }
     BlockField<double>& rate = fluid_.void_fraction_rate_1_s();
     for (std::size_t c = 0; c < eps.data().size(); ++c) {
       // No rate on the first coupling step: eps_old is not a state of this run (methods note sec. 8, item 6).
@@ -241,8 +253,21 @@ void CfdDemCoupling::fill_fields() {
     us[c] += w * particle_velocity(cp, i);
     ksl[c] += w * cp.drag_coefficient_N_s_m()[i] / map_.fluid_volume_m3(c);
   });
-  for (std::size_t c = 0; c < weight.data().size(); ++c) {
-    if (weight[c] > 0.0) us[c] = us[c] / weight[c];
+  if (smoothing_) {
+    // Ksl and the momentum density Ksl Us are what the implicit drag puts on the grid: smooth both (conserved), and
+    // Us becomes their ratio, so Ksl (Us - u) keeps its total.
+    BlockField<Vec3> momentum(fluid_.grid().cells(), Vec3{});
+    map_.for_each_cell([&](std::size_t c, std::size_t k) {
+      momentum[c] += w * cp.drag_coefficient_N_s_m()[k / kMarkersPerSphere] / map_.fluid_volume_m3(c) *
+                     particle_velocity(cp, k / kMarkersPerSphere);
+    });
+    smoothing_->smooth(ksl);
+    smoothing_->smooth(momentum);
+    for (std::size_t c = 0; c < ksl.data().size(); ++c) us[c] = ksl[c] > 0.0 ? momentum[c] / ksl[c] : Vec3{};
+  } else {
+    for (std::size_t c = 0; c < weight.data().size(); ++c) {
+      if (weight[c] > 0.0) us[c] = us[c] / weight[c];
+    }
   }
   fill_cell_field_ghosts(fluid_.grid(), us);
   if (refresh && settings_.fluid_drag == FluidDrag::implicit && settings_.two_way) {
@@ -273,13 +298,24 @@ void CfdDemCoupling::exchange_drag() {
   const BlockField<double>& ksl = fluid_.implicit_coefficient_kg_m3_s();
   const BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
   const auto& n = grid.cells();
+  if (smoothing_) {   // the explicit exchange (drag impulses, given-back imbalance, lift reaction), smoothed, conserved
+    for (int k = 0; k < n[2]; ++k) {
+      for (int jj = 0; jj < n[1]; ++jj) {
+        for (int i = 0; i < n[0]; ++i) {
+          const std::size_t c = f.index(i, jj, k);
+          if (grid.fluid_fractions()[c] > 0.0) f[c] += lift_reaction_N_[c] / map_.fluid_volume_m3(c);
+        }
+      }
+    }
+    smoothing_->smooth(f);
+  }
   stats_.explicit_to_fluid_N_s = {};
   for (int k = 0; k < n[2]; ++k) {
     for (int jj = 0; jj < n[1]; ++jj) {
       for (int i = 0; i < n[0]; ++i) {
         const std::size_t c = f.index(i, jj, k);
         if (grid.fluid_fractions()[c] <= 0.0) continue;
-        f[c] += lift_reaction_N_[c] / map_.fluid_volume_m3(c);
+        if (!smoothing_) f[c] += lift_reaction_N_[c] / map_.fluid_volume_m3(c);
         if (settings_.fluid_drag == FluidDrag::implicit && ksl[c] > 0.0) {
           f[c] -= ksl[c] * (us[c] - fluid_.cell_velocity(i, jj, k));   // the implicit part's explicit remainder
         }

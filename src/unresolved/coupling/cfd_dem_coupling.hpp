@@ -11,6 +11,7 @@
 #include "closures/wall_correction.hpp"
 #include "common/vec3.hpp"
 #include "unresolved/coupling/channel_frame.hpp"
+#include "unresolved/coupling/diffusion_smoothing.hpp"
 #include "unresolved/coupling/divided_void_fraction.hpp"
 #include "unresolved/coupling/self_mobility.hpp"
 #include "unresolved/coupling/suspension_viscosity.hpp"
@@ -76,6 +77,10 @@ struct CouplingSettings {
   // The cells' stress as a local viscosity factor of the smoothed volume fraction (suspension_viscosity.hpp),
   // refreshed with eps; needs void_fraction_feedback.
   SuspensionViscosity suspension_viscosity = SuspensionViscosity::none;
+  // > 0: the void fraction, the exchanged forces (explicit and implicit) and with them the cells' stress are
+  // smoothed over this length, m (diffusion_smoothing.hpp), so the particles' footprint is a physical length and
+  // not the grid's cell (issue #25). 0: each field stays on the cells the divided markers fall in.
+  double smoothing_length_m = 0.0;
 };
 
 /// Closures by role; drag is required, lift and deformation may be null (no lift, DI = 0).
@@ -181,6 +186,7 @@ class CfdDemCoupling {
   DragLimitedStep last_drag_limited_;
   std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
   std::unique_ptr<ChannelFrame> channel_;       // the channel frame's memo (closure_frame = channel)
+  std::unique_ptr<DiffusionSmoothing> smoothing_;   // smoothing_length_m > 0
 };
 
 }  // namespace hs::unresolved
