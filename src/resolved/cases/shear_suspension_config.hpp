@@ -45,7 +45,7 @@ struct ShearSuspensionConfig {
   long sample_every_steps = 0;      // derived
 };
 
-/// Reads and checks a `shear-suspension` case strictly. `quick` caps the run at 20 samples (CI). Throws
+/// Reads and checks a `shear-suspension` case strictly. `quick` caps the run at 10 samples (CI). Throws
 /// hs::common::ConfigError naming file and key.
 ShearSuspensionConfig read_shear_suspension(hs::common::ConfigFile& file, bool quick);
 
