@@ -193,13 +193,6 @@ int run_shear_suspension(const common::CaseRequest& request) {
   } catch (const PlacementImpossible& e) {
     throw common::ConfigError(fmt::format("{}: [cells] hematocrit = {:g}: {}", file, c.hematocrit, e.what()));
   }
-  int ranks = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  if (ranks > 1 && placement.cells_m.size() > 1) {
-    throw common::ConfigError(fmt::format("{}: {} cells on {} MPI ranks: the shear-suspension case runs more than one "
-                                          "cell on one rank only (np = 1 vs np = 2 is not tested yet); run it without "
-                                          "mpiexec", file, placement.cells_m.size(), ranks));
-  }
   if (request.resume) {
     throw common::ConfigError(fmt::format("{}: the shear-suspension case writes no checkpoints yet: --resume cannot "
                                           "continue it; start it anew", file));

@@ -11,8 +11,9 @@ namespace hs::resolved {
 /// without overlap (cell_placement), each with its own npFEM solve, the cell-cell contact repulsion between them and a
 /// plate repulsion of the same form (CellSuspension). Writes timeseries.csv (summed stresslet, eta_r, closest
 /// approach), summary.json (eta_r = 1 + <sum S_xy> / (V_box mu gamma_dot) over the second half with its batch-means
-/// standard error, phi, Ca, Re), membranes.pvd + vtk/, units.txt, log.txt. Bad input, a hematocrit the box cannot
-/// hold, or N > 1 cells on more than one MPI rank: exit 2. Returns 0 (the run measures only).
+/// standard error, phi, Ca, Re), membranes.pvd + vtk/, units.txt, log.txt. Every rank holds every membrane (as
+/// CoupledCell): np = 2 gives np = 1's series to round-off (tested). Bad input or a hematocrit the box cannot hold:
+/// exit 2. Returns 0 (the run measures only).
 int run_shear_suspension(const hs::common::CaseRequest& request);
 
 }  // namespace hs::resolved
