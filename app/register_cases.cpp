@@ -2,6 +2,7 @@
 // The single list of case types `hemoscale run` knows: one line per case.
 #include "app/registry.hpp"
 #include "resolved/cases/plate_cell.hpp"
+#include "resolved/cases/shear_suspension.hpp"
 #include "resolved/cases/stenosis_cell.hpp"
 #include "resolved/cases/stretching.hpp"
 #include "resolved/cases/tube_cell.hpp"
@@ -24,6 +25,7 @@ std::map<std::string, Entry> case_types() {
   r["open-geometry"] = {"RBC spheres through any geometry (tube, stenosis, bifurcation, box, STL) between named openings (CFD-DEM)", hs::unresolved::run_open_geometry};
   r["shear"] = {"one RBC in simple shear between moving plates: flow mode, tumbling period vs Jeffery, inclination", hs::resolved::run_shear};
   r["migration"] = {"one RBC released off-centre in plane Poiseuille flow: lateral migration (Shi et al. 2014)", hs::resolved::run_migration};
+  r["shear-suspension"] = {"many RBCs at a hematocrit in simple shear between moving plates: relative viscosity from the stresslets", hs::resolved::run_shear_suspension};
   r["stenosis"] = {"one RBC through a planar stenosed channel: D_x, D_y, D_z through the throat (Hsieh 2020)", hs::resolved::run_stenosis};
   return r;
 }

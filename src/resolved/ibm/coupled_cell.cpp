@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "common/errors.hpp"
 
@@ -97,8 +98,10 @@ void CoupledCell::membrane_solve() {
   }
 }
 
-void CoupledCell::ibm_forcing() {
-  report_.forcing = ibm_.apply(markers_);
+void CoupledCell::ibm_forcing() { take_forcing(ibm_.apply(markers_)); }
+
+void CoupledCell::take_forcing(ForcingReport forcing) {
+  report_.forcing = std::move(forcing);
   if (settings_.membrane_force != MembraneForce::ibm_reaction) return;
   const auto& f = report_.forcing.marker_force_lu;
   if (reaction_lu_.size() != f.size()) reaction_lu_.assign(f.size(), {});

@@ -77,6 +77,11 @@ class CoupledCell {
 
   void membrane_solve();
   void ibm_forcing();
+  /// The markers' state this step (a suspension concatenates every cell's markers into one forcing pass).
+  [[nodiscard]] const Markers& markers() const { return markers_; }
+  /// Takes the forcing this cell's markers got from a forcing pass done elsewhere (CellSuspension: one pass over all
+  /// cells' markers); ibm_forcing() is take_forcing(its own pass).
+  void take_forcing(ForcingReport forcing);
   void lbm_step();
   void markers_advect();
   /// All four stages (tests; the cases add the stages to a TimeLoop to time them).

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// Placement of many cells: the hematocrit asked is reached to within one cell, no two cells overlap (checked by an
+// independent inside test: the solid-angle winding number), every vertex keeps the wall clearance, the same seed gives
+// the same cells, and a hematocrit the box cannot hold is refused with a message.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "resolved/cases/cell_placement.hpp"
+#include "resolved/membrane/rbc_mesh_generator.hpp"
+
+namespace hr = hs::resolved;
+using hs::common::Vec3;
+
+namespace {
+
+/// Generalised winding number of a closed mesh about p: 1 inside, 0 outside (Van Oosterom & Strackee 1983 solid
+/// angles, summed over the triangles and divided by 4 pi).
+double winding_number(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles, const Vec3& p) {
+  double sum = 0.0;
+  for (const auto& t : triangles) {
+    const Vec3 a = x[t[0]] - p, b = x[t[1]] - p, c = x[t[2]] - p;
+    const double la = hs::common::norm(a), lb = hs::common::norm(b), lc = hs::common::norm(c);
+    const double num = hs::common::dot(a, hs::common::cross(b, c));
+    const double den = la * lb * lc + hs::common::dot(a, b) * lc + hs::common::dot(b, c) * la + hs::common::dot(c, a) * lb;
+    sum += 2.0 * std::atan2(num, den);
+  }
+  return sum / (4.0 * std::numbers::pi);
+}
+
+// The shear-suspension box: 24 x 24 x 16 um, periodic in x and z, plates at y = 0 and 24 um.
+const hr::PlacementBox kBox{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {24e-6, 24e-6, 16e-6}, .periodic = {true, false, true}};
+
+}  // namespace
+
+TEST(CellPlacement, ReachesTheHematocritWithoutOverlaps) {
+  const hr::TriangleMesh rbc = hr::make_rbc_mesh({});
+  const hr::PlacementSpec spec{.hematocrit = 0.15, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 3};
+  const hr::Placement p = hr::place_cells(rbc, kBox, spec);
+  const double one_cell = p.cell_volume_m3 / p.box_volume_m3;
+  // N = round(phi V_box / V_cell): within half a cell of the target.
+  EXPECT_NEAR(p.hematocrit, 0.15, 0.5 * one_cell + 1e-12);
+  ASSERT_EQ(static_cast<double>(p.cells_m.size()), std::round(0.15 / one_cell));
+  EXPECT_GE(hr::min_intercell_distance_m(p.cells_m, kBox), spec.min_gap_m);
+  bool crosses_a_face = false;
+  for (std::size_t a = 0; a < p.cells_m.size(); ++a) {
+    for (const auto& v : p.cells_m[a]) {
+      EXPECT_GE(v.y, spec.wall_clearance_m);
+      EXPECT_LE(v.y, 24e-6 - spec.wall_clearance_m);
+      crosses_a_face = crosses_a_face || v.x < 0.0 || v.x > 24e-6 || v.z < 0.0 || v.z > 16e-6;
+    }
+    // No vertex of another cell (moved by whole periods next to this one) inside this cell.
+    for (std::size_t b = 0; b < p.cells_m.size(); ++b) {
+      if (a == b) continue;
+      for (const auto& v : p.cells_m[b]) {
+        for (const double sx : {-24e-6, 0.0, 24e-6}) {
+          for (const double sz : {-16e-6, 0.0, 16e-6}) {
+            ASSERT_LT(winding_number(p.cells_m[a], rbc.triangles, v + Vec3{sx, 0.0, sz}), 0.5)
+                << "a vertex of cell " << b << " lies inside cell " << a;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(crosses_a_face) << "at phi 0.15 some cell should straddle a periodic face (unwrapped vertices)";
+  std::printf("[placement] %zu cells, hematocrit %.4f, %ld tries\n", p.cells_m.size(), p.hematocrit, p.attempts);
+}
+
+TEST(CellPlacement, SameSeedSameCells) {
+  const hr::TriangleMesh rbc = hr::make_rbc_mesh({});
+  const hr::PlacementSpec spec{.hematocrit = 0.1, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 7};
+  const auto a = hr::place_cells(rbc, kBox, spec);
+  const auto b = hr::place_cells(rbc, kBox, spec);
+  ASSERT_EQ(a.cells_m.size(), b.cells_m.size());
+  for (std::size_t c = 0; c < a.cells_m.size(); ++c) {
+    for (std::size_t v = 0; v < a.cells_m[c].size(); ++v) {
+      for (int k = 0; k < 3; ++k) ASSERT_EQ(a.cells_m[c][v][k], b.cells_m[c][v][k]);
+    }
+  }
+}
+
+TEST(CellPlacement, RefusesWhatTheBoxCannotHold) {
+  const hr::TriangleMesh rbc = hr::make_rbc_mesh({});
+  // 0.6 of the box in randomly placed discs 0.5 um apart: beyond random sequential addition's jamming.
+  const hr::PlacementSpec full{.hematocrit = 0.6, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 1,
+                               .attempts_per_cell = 300};
+  try {
+    (void)hr::place_cells(rbc, kBox, full);
+    FAIL() << "placement at phi 0.6 should be impossible";
+  } catch (const hr::PlacementImpossible& e) {
+    EXPECT_NE(std::string(e.what()).find("lower the hematocrit or enlarge the box"), std::string::npos) << e.what();
+  }
+  // A target below half a cell.
+  const hr::PlacementSpec empty{.hematocrit = 1e-4, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 1};
+  EXPECT_THROW((void)hr::place_cells(rbc, kBox, empty), hr::PlacementImpossible);
+}
