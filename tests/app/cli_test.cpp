@@ -139,7 +139,7 @@ TEST(Cli, RunHelpListsEveryCaseTypeWithItsLine) {
   const auto r = run("run --help");
   EXPECT_EQ(r.code, 0) << r.output;
   for (const char* type : {"tube-poiseuille", "stretching", "tube-plasma", "tube-cell", "tube-pries", "shear", "migration",
-                           "stenosis"}) {
+                           "stenosis", "shear-suspension"}) {
     EXPECT_NE(r.output.find(std::string("\n  ") + type + " "), std::string::npos) << type << " not listed:\n" << r.output;
   }
   EXPECT_NE(r.output.find("plasma in a periodic tube, checked against Poiseuille"), std::string::npos) << r.output;
