@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `hemoscale run CASE_DIR`: read case.toml, dispatch on [case] type.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -69,7 +70,9 @@ void add_run_command(CLI::App& cli, Action& action) {
   cmd->add_flag("--quiet,-q", args->quiet, "no progress line");
   cmd->add_flag("--quick", args->quick, "coarse, short version of the case (for CI)");
   std::string types = "Case types ([case] type in case.toml):";
-  for (const auto& [name, entry] : case_types()) types += fmt::format("\n  {:<16}{}", name, entry.help);
+  std::size_t width = 0;   // the longest name and one space: every description starts in one column
+  for (const auto& [name, entry] : case_types()) width = std::max(width, name.size() + 1);
+  for (const auto& [name, entry] : case_types()) types += fmt::format("\n  {:<{}}{}", name, width, entry.help);
   cmd->footer(types);
   cmd->callback([&action, args] { action = [args] { return run_case(*args); }; });
 }
