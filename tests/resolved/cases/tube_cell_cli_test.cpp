@@ -80,6 +80,8 @@ TEST(TubeCellCli, QuickDragRunWritesSeriesAndGroups) {
   }
   EXPECT_NEAR(s["results"]["reynolds"].get<double>(), 0.5, 1e-12);   // recomputed from the derived U_max
   EXPECT_NEAR(s["results"]["gamma_plus"].get<double>(), 0.5 * 0.5, 1e-9);   // gamma+ = Re r* with the fixed centre
+  // The lattice fluid's memory at the wall: gamma_wall (tau - 1/2) dt = (2 U_max / R) x 12 x 4 us = 800 x 48e-6.
+  EXPECT_NEAR(s["numerics"]["lattice_weissenberg"].get<double>(), 800.0 * 12.0 * 4.0e-6, 1e-12);
   EXPECT_TRUE(fs::exists(out / "membrane.pvd"));
   EXPECT_TRUE(fs::exists(out / "fields.pvd"));
 }
