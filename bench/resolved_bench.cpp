@@ -4,6 +4,8 @@
 // and the shares of LBM / IBM / membrane from the run's own stage timings (medians). The campaign projection sums,
 // over the 60 runs of cases/campaign/tube-re-rstar, the lattice steps each needs (its dt and Jeffery period come from
 // the same reader the runs use) at the measured cost per step, divided by the campaign's concurrent jobs.
+// The same is measured with the cytoplasm at the plasma's viscosity (ratio 1, one fluid), back to back with the
+// shipped case, so that the cost of the inner fluid (its tau cap lowers dt) is read from one machine state.
 #include <omp.h>
 
 #include <algorithm>
@@ -47,8 +49,20 @@ std::string with(std::string text, const std::string& from, const std::string& t
   return text.replace(pos, from.size(), to);
 }
 
-hs::resolved::TubeCellConfig grid_point(double reynolds, double r_star) {
-  std::string text = with(shipped_case_text(), "reynolds = 0.5 ", fmt::format("reynolds = {} ", reynolds));
+/// The shipped case, or the same with the cytoplasm at the plasma's own viscosity (rho nu of [fluid]: ratio 1). A
+/// case that states cytoplasm_viscosity_Pa_s itself is rejected for the ratio-1 variant rather than silently measured.
+std::string case_text(bool ratio_one) {
+  std::string text = shipped_case_text();
+  if (!ratio_one) return text;
+  if (text.find("cytoplasm_viscosity_Pa_s") != std::string::npos) {
+    throw std::runtime_error("bench resolved: tube-drag/case.toml sets cytoplasm_viscosity_Pa_s; the ratio-1 variant "
+                             "inserts its own");
+  }
+  return with(text, "[cell]\n", "[cell]\ncytoplasm_viscosity_Pa_s = 1.025e-3\n");   // 1025 kg/m^3 x 1e-6 m^2/s
+}
+
+hs::resolved::TubeCellConfig grid_point(bool ratio_one, double reynolds, double r_star) {
+  std::string text = with(case_text(ratio_one), "reynolds = 0.5 ", fmt::format("reynolds = {} ", reynolds));
   text = with(text, "radial_position = 0.5 ", fmt::format("radial_position = {} ", r_star));
   auto file = common::ConfigFile::parse(text, "tube-drag/case.toml");
   (void)file->root().section("case").string("type");
@@ -57,11 +71,11 @@ hs::resolved::TubeCellConfig grid_point(double reynolds, double r_star) {
 
 /// Lattice steps of the whole campaign when every run goes through the membrane transient and then `periods` Jeffery
 /// periods (capped by its own limit).
-double campaign_steps(double periods) {
+double campaign_steps(bool ratio_one, double periods) {
   double steps = 0.0;
   for (double re : kReynolds) {
     for (double r : kRadialPositions) {
-      const auto c = grid_point(re, r);
+      const auto c = grid_point(ratio_one, re, r);
       const double transient = hs::resolved::kMembraneTransientTimes * hs::resolved::membrane_relaxation_time_s(c);
       steps += kSetups * std::min(transient + periods * hs::resolved::jeffery_period_s(c), c.max_time_s) / c.dt_s;
     }
@@ -75,8 +89,8 @@ struct Sample {
   double lbm_share, ibm_share, membrane_share;
 };
 
-Sample run_once(const fs::path& dir, double max_time_s) {
-  const std::string text = with(shipped_case_text(), "max_jeffery_periods = 6 ", fmt::format("max_time_s = {} ", max_time_s));
+Sample run_once(const fs::path& dir, bool ratio_one, double max_time_s) {
+  const std::string text = with(case_text(ratio_one), "max_jeffery_periods = 6 ", fmt::format("max_time_s = {} ", max_time_s));
   auto file = common::ConfigFile::parse(with(text, "vtk_every_s = 0.05 ", "vtk_every_s = 0.0 "), "tube-drag/case.toml");
   (void)file->root().section("case").string("type");
   fs::remove_all(dir / "out");
@@ -103,40 +117,60 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-}  // namespace
+/// One variant's medians and its campaign projection.
+struct Measured {
+  double s_per_sim_ms, ms_per_step, lbm_share, ibm_share, membrane_share, hours_expected, hours_cap, viscosity_ratio;
+};
 
-int run_resolved_bench(const hs::common::TaskOptions& options) {
-  omp_set_num_threads(1);   // one thread per run, as the campaign runs them (threads_per_job = 1)
-  const auto dir = fs::temp_directory_path() / "hs_bench_resolved";
-  fs::create_directories(dir);
-  // 2 ms at Re 0.5 = 500 lattice steps (250 membrane steps) past the 156-step spin-up; --quick: 100 steps.
-  const double max_time_s = options.quick ? 4e-4 : 2e-3;
+Measured measure(const fs::path& dir, bool ratio_one, double max_time_s) {
   std::vector<Sample> samples;
-  for (int rep = 0; rep < 3; ++rep) samples.push_back(run_once(dir, max_time_s));
+  for (int rep = 0; rep < 3; ++rep) samples.push_back(run_once(dir, ratio_one, max_time_s));
   auto pick = [&](double Sample::*field) {
     std::vector<double> v;
     for (const auto& s : samples) v.push_back(s.*field);
     return median(v);
   };
   const double ms_per_step = pick(&Sample::ms_per_step);
-  const double hours_cap = campaign_steps(6.0) * ms_per_step / 3.6e6 / kCampaignJobs;
-  const double hours_expected = campaign_steps(kExpectedPeriods) * ms_per_step / 3.6e6 / kCampaignJobs;
-  fmt::print("resolved tube-drag (r* 0.5, Re 0.5, dx 1 um, 1 thread): {:.3f} s per simulated ms, {:.2f} ms per step "
-             "(LBM {:.0f} %, IBM {:.0f} %, membrane {:.0f} %)\n",
-             pick(&Sample::s_per_sim_ms), ms_per_step, 100 * pick(&Sample::lbm_share), 100 * pick(&Sample::ibm_share),
-             100 * pick(&Sample::membrane_share));
-  fmt::print("campaign (60 runs, {} at once): {:.1f} h if every run goes the membrane transient + {} Jeffery periods, {:.1f} h at its cap\n",
-             kCampaignJobs, hours_expected, kExpectedPeriods, hours_cap);
-  nlohmann::json out = {{"benchmark", "resolved"},
-                        {"s_per_sim_ms", pick(&Sample::s_per_sim_ms)},
-                        {"ms_per_step", ms_per_step},
-                        {"lbm_share", pick(&Sample::lbm_share)},
-                        {"ibm_share", pick(&Sample::ibm_share)},
-                        {"membrane_share", pick(&Sample::membrane_share)},
-                        {"campaign_hours_projected", hours_expected},
-                        {"campaign_hours_at_cap", hours_cap},
-                        {"expected_periods_per_run", kExpectedPeriods},
-                        {"repetitions", 3}};
+  return {pick(&Sample::s_per_sim_ms), ms_per_step, pick(&Sample::lbm_share), pick(&Sample::ibm_share),
+          pick(&Sample::membrane_share), campaign_steps(ratio_one, kExpectedPeriods) * ms_per_step / 3.6e6 / kCampaignJobs,
+          campaign_steps(ratio_one, 6.0) * ms_per_step / 3.6e6 / kCampaignJobs, grid_point(ratio_one, 0.5, 0.5).viscosity_ratio};
+}
+
+void print(const char* what, const Measured& m) {
+  fmt::print("resolved tube-drag{} (r* 0.5, Re 0.5, dx 1 um, 1 thread, viscosity ratio {:.3g}): {:.3f} s per simulated ms, "
+             "{:.2f} ms per step (LBM {:.0f} %, IBM {:.0f} %, membrane {:.0f} %)\n",
+             what, m.viscosity_ratio, m.s_per_sim_ms, m.ms_per_step, 100 * m.lbm_share, 100 * m.ibm_share,
+             100 * m.membrane_share);
+  fmt::print("  campaign (60 runs, {} at once): {:.1f} h if every run goes the membrane transient + {} Jeffery periods, "
+             "{:.1f} h at its cap\n",
+             kCampaignJobs, m.hours_expected, kExpectedPeriods, m.hours_cap);
+}
+
+nlohmann::json to_json(const Measured& m) {
+  return {{"viscosity_ratio", m.viscosity_ratio}, {"s_per_sim_ms", m.s_per_sim_ms}, {"ms_per_step", m.ms_per_step},
+          {"lbm_share", m.lbm_share}, {"ibm_share", m.ibm_share}, {"membrane_share", m.membrane_share},
+          {"campaign_hours_projected", m.hours_expected}, {"campaign_hours_at_cap", m.hours_cap}};
+}
+
+}  // namespace
+
+int run_resolved_bench(const hs::common::TaskOptions& options) {
+  omp_set_num_threads(1);   // one thread per run, as the campaign runs them (threads_per_job = 1)
+  const auto dir = fs::temp_directory_path() / "hs_bench_resolved";
+  fs::create_directories(dir);
+  // 2 ms at Re 0.5 = 500 lattice steps (250 membrane steps) at ratio 1; --quick: 0.4 ms.
+  const double max_time_s = options.quick ? 4e-4 : 2e-3;
+  const Measured shipped = measure(dir, false, max_time_s);
+  const bool one_fluid = shipped.viscosity_ratio == 1.0;
+  const Measured plasma = one_fluid ? shipped : measure(dir, true, max_time_s);
+  print("", shipped);
+  if (!one_fluid) print(", cytoplasm at the plasma's viscosity", plasma);
+  nlohmann::json out = to_json(shipped);
+  out["benchmark"] = "resolved";
+  out["expected_periods_per_run"] = kExpectedPeriods;
+  out["repetitions"] = 3;
+  out["viscosity_ratio_1"] = to_json(plasma);
+  const double hours_expected = shipped.hours_expected;
   hs::common::CheckList checks;
   if (options.quick) {
     checks.skip("campaign_hours_projected", "--quick: 100 steps, mostly the spin-up, do not project a campaign");

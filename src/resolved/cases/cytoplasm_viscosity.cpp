@@ -17,8 +17,10 @@ constexpr double kMinTau = 0.55;
 }  // namespace
 
 double read_cytoplasm_viscosity_ratio(hs::common::ConfigSection cell, double plasma_viscosity_Pa_s) {
-  if (!cell.has("cytoplasm_viscosity_Pa_s")) return 1.0;
-  const double mu_in = cell.number_in("cytoplasm_viscosity_Pa_s", 1.0e-5, 1.0);
+  // Absent: a healthy cell's haemoglobin solution, 6 mPa s (Cokelet & Meiselman 1968, Science 162:275, as cited in
+  // kHealthyCytoplasmViscosity_Pa_s), ratio 5.85 against the shipped plasma's 1.025 mPa s. A case that needs the
+  // one-fluid cell of the runs before #27 gives the plasma's own viscosity (ratio 1 exactly).
+  const double mu_in = cell.number_in_or("cytoplasm_viscosity_Pa_s", 1.0e-5, 1.0, kHealthyCytoplasmViscosity_Pa_s);
   double ratio = mu_in / plasma_viscosity_Pa_s;
   if (std::abs(ratio - 1.0) < 1e-12) ratio = 1.0;
   cell.derived("viscosity_ratio", ratio);

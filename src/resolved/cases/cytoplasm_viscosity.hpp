@@ -13,8 +13,9 @@ namespace hs::resolved {
 inline constexpr double kHealthyCytoplasmViscosity_Pa_s = 6.0e-3;
 
 /// Reads [cell] cytoplasm_viscosity_Pa_s (Pa s, 1e-5..1) and returns the ratio to the plasma's dynamic viscosity.
-/// Absent: the plasma's own, ratio 1 (the shipped cases and the campaign were run so). A ratio within 1e-12 of 1
-/// is 1 exactly, so the lattice keeps one phase. Records the ratio as the derived key viscosity_ratio.
+/// Absent: kHealthyCytoplasmViscosity_Pa_s (ratio 5.85 against the shipped 1.025 mPa s plasma). A ratio within 1e-12
+/// of 1 is 1 exactly, so the lattice keeps one phase (the runs before #27, bit for bit). Records the ratio as the
+/// derived key viscosity_ratio.
 [[nodiscard]] double read_cytoplasm_viscosity_ratio(hs::common::ConfigSection cell, double plasma_viscosity_Pa_s);
 
 /// After derive_cell_numerics(): refuses (ConfigError naming [cell] cytoplasm_viscosity_Pa_s) a ratio that puts the

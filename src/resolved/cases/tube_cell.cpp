@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "common/check_list.hpp"
+#include "common/dimensionless_groups.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
 #include "common/run_context.hpp"
@@ -201,6 +202,11 @@ int run_tube_cell(const common::CaseRequest& request) {
   summary["numerics"] = {{"dx_m", c.dx_m},
                          {"dt_s", c.dt_s},
                          {"tau", c.collision.tau},
+                         // The lattice fluid's memory against the flow's time at the wall, where the shear is largest:
+                         // gamma_wall (tau - 1/2) dt (docs/resolved-coupling.md, "The lattice fluid's memory"). The
+                         // cytoplasm's is viscosity_ratio times this at the same shear rate.
+                         {"lattice_weissenberg", common::poiseuille_shear_rate(c.u_max_m_s, c.radius_m, c.radius_m) *
+                                                     (c.collision.tau - 0.5) * c.dt_s},
                          {"viscosity_ratio", c.viscosity_ratio},   // cytoplasm / plasma; 1: one fluid
                          {"tau_cytoplasm", c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau},
                          {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},

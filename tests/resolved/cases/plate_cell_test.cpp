@@ -130,29 +130,33 @@ TEST(PlateCellConfig, TheWeissenbergBoundIsReadAndOnlyLowersTau) {
   EXPECT_THROW(read(bad, PlateFlow::shear), common::ConfigError);
 }
 
-TEST(PlateCellConfig, WithoutACytoplasmViscosityTheCellHoldsPlasma) {
-  // Absent, or the plasma's own mu = rho nu = 1.025e-3 Pa s: ratio exactly 1, and the lattice keeps one phase.
-  const PlateCellConfig absent = read(shipped("shear/tank-treading"), PlateFlow::shear);
-  EXPECT_EQ(absent.numerics.viscosity_ratio, 1.0);
-  const std::string same = with(shipped("shear/tank-treading"), "initial_height = 0.5 ",
-                                "cytoplasm_viscosity_Pa_s = 1.025e-3\ninitial_height = 0.5 ");
-  const PlateCellConfig c = read(same, PlateFlow::shear);
-  EXPECT_EQ(c.numerics.viscosity_ratio, 1.0);
-  EXPECT_EQ(c.numerics.collision.tau, absent.numerics.collision.tau);
+TEST(PlateCellConfig, WithoutACytoplasmViscosityTheCellIsHealthy) {
+  // Absent: kHealthyCytoplasmViscosity_Pa_s = 6 mPa s against the plasma's rho nu = 1.025e-3 Pa s (membrane-viscosity
+  // states no value). The plasma's own value (shear/tank-treading states it): ratio exactly 1, the lattice keeps one
+  // phase, and tau is the one-fluid case's.
+  const PlateCellConfig absent = read(shipped("shear/membrane-viscosity"), PlateFlow::shear);
+  EXPECT_NEAR(absent.numerics.viscosity_ratio, 6.0e-3 / (1025.0 * 1.0e-6), 1e-12);
+  const PlateCellConfig plasma = read(shipped("shear/tank-treading"), PlateFlow::shear);
+  EXPECT_EQ(plasma.numerics.viscosity_ratio, 1.0);
+  const std::string inner_default = with(shipped("shear/tank-treading"), "cytoplasm_viscosity_Pa_s = 1.025e-3 ", "");
+  EXPECT_NEAR(read(inner_default, PlateFlow::shear).numerics.viscosity_ratio, 6.0e-3 / 1.025e-3, 1e-12);
 }
 
 TEST(PlateCellConfig, HealthyCytoplasmGivesTheInnerTauWithinTheCap) {
   // 6 mPa s against 1.025 mPa s: ratio 5.854. membrane-viscosity runs at its Weissenberg tau 5.40, and the cytoplasm at
-  // 1/2 + 5.854 (5.40 - 1/2) = 29.2, under max_tau 30.5: tau outside unchanged.
-  const std::string key = "cytoplasm_viscosity_Pa_s = 6.0e-3\n";
-  const PlateCellConfig plain = read(shipped("shear/membrane-viscosity"), PlateFlow::shear);
-  const PlateCellConfig c = read(with(shipped("shear/membrane-viscosity"), "[cell]\n", "[cell]\n" + key), PlateFlow::shear);
+  // 1/2 + 5.854 (5.40 - 1/2) = 29.2, under max_tau 30.5: tau outside the same as with plasma inside.
+  const PlateCellConfig plain = read(with(shipped("shear/membrane-viscosity"), "[cell]\n",
+                                          "[cell]\ncytoplasm_viscosity_Pa_s = 1.025e-3\n"), PlateFlow::shear);
+  const PlateCellConfig c = read(shipped("shear/membrane-viscosity"), PlateFlow::shear);   // the default: healthy
   const double ratio = 6.0e-3 / (1025.0 * 1.0e-6);
+  EXPECT_EQ(plain.numerics.viscosity_ratio, 1.0);
   EXPECT_NEAR(c.numerics.viscosity_ratio, ratio, 1e-12);
   EXPECT_EQ(c.numerics.collision.tau, plain.numerics.collision.tau);
   EXPECT_NEAR(c.numerics.inner_collision.tau, 0.5 + ratio * (plain.numerics.collision.tau - 0.5), 1e-12);
-  // The stiff case runs at tau 25.5: the cap 30.5 now holds inside, tau_out - 1/2 = 30 / ratio (more steps).
-  const PlateCellConfig stiff = read(with(shipped("shear"), "[cell]\n", "[cell]\n" + key), PlateFlow::shear);
+  // The stiff case runs at tau 25.5 with plasma inside: with 6 mPa s the cap 30.5 holds inside, tau_out - 1/2 = 30 /
+  // ratio (more steps).
+  const PlateCellConfig stiff = read(with(shipped("shear"), "cytoplasm_viscosity_Pa_s = 1.025e-3 ",
+                                          "cytoplasm_viscosity_Pa_s = 6.0e-3 "), PlateFlow::shear);
   EXPECT_NEAR(stiff.numerics.collision.tau, 0.5 + 30.0 / ratio, 1e-12);
   EXPECT_NEAR(stiff.numerics.inner_collision.tau, 30.5, 1e-12);
   EXPECT_EQ(stiff.numerics.inner_collision.model, stiff.numerics.collision.model);

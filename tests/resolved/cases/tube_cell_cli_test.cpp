@@ -29,9 +29,18 @@ using Result = hs::test::CliResult;
 
 Result run(const std::string& args) { return hs::test::run_hemoscale(args); }
 
-/// The shipped drag case with one line replaced (`from` must occur in it).
+/// The tube case's text with the plasma's own viscosity inside the cell (ratio 1): the machinery tests below (CLI,
+/// resume, AA, MPI) keep the one-fluid dt of 4 us that their step counts and run times were set for; the healthy
+/// default cytoplasm caps tau outside at 3.06 (dt 0.854 us, 4.7x the steps). The two-phase lattice resumes bit for bit
+/// (ShearCli.CytoplasmResumesBitForBit) and the tube with it is tube_cell_config_test's and the shipped case's.
+std::string with_plasma_inside(const std::string& text) {
+  return hs::test::replaced(text, "[cell]\n", "[cell]\ncytoplasm_viscosity_Pa_s = 1.025e-3\n");
+}
+
+/// The shipped drag case, plasma inside, with one line replaced (`from` must occur in it).
 fs::path write_variant(const std::string& name, const std::string& from, const std::string& to) {
-  return hs::test::write_case_variant("tube-drag", "tube_cell_" + name, from, to);
+  return hs::test::write_case_text("tube_cell_" + name,
+                                   hs::test::replaced(with_plasma_inside(hs::test::shipped_case_text("tube-drag")), from, to));
 }
 
 TEST(TubeCellCli, TauIsDerivedNotGiven) {
@@ -71,6 +80,8 @@ TEST(TubeCellCli, QuickDragRunWritesSeriesAndGroups) {
   }
   EXPECT_NEAR(s["results"]["reynolds"].get<double>(), 0.5, 1e-12);   // recomputed from the derived U_max
   EXPECT_NEAR(s["results"]["gamma_plus"].get<double>(), 0.5 * 0.5, 1e-9);   // gamma+ = Re r* with the fixed centre
+  // The lattice fluid's memory at the wall: gamma_wall (tau - 1/2) dt = (2 U_max / R) x 12 x 4 us = 800 x 48e-6.
+  EXPECT_NEAR(s["numerics"]["lattice_weissenberg"].get<double>(), 800.0 * 12.0 * 4.0e-6, 1e-12);
   EXPECT_TRUE(fs::exists(out / "membrane.pvd"));
   EXPECT_TRUE(fs::exists(out / "fields.pvd"));
 }
@@ -133,6 +144,7 @@ TEST(TubeCellCli, TwoRanksGiveTheSameTimeSeriesAsOne) {
   const auto pos = text.find(cap);
   ASSERT_NE(pos, std::string::npos);
   text.replace(pos, cap.size(), "max_time_s = 0.0006 ");
+  text = with_plasma_inside(text);
   const auto dir = fs::temp_directory_path() / "hs_tube_cell_np2";
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -160,7 +172,7 @@ TEST(TubeCellCli, TwoRanksGiveTheSameTimeSeriesAsOne) {
 /// The shipped drag case for `seconds`, with the membrane solve converged (so that round-off is not amplified by
 /// where L-BFGS stops at its iteration cap) and the shipped streaming scheme ("aa") replaced by `streaming`.
 fs::path drag_variant(const std::string& name, const std::string& seconds, const std::string& streaming) {
-  std::string text = hs::test::shipped_case_text("tube-drag");
+  std::string text = with_plasma_inside(hs::test::shipped_case_text("tube-drag"));
   text = hs::test::replaced(text, "max_jeffery_periods = 6 ", "max_time_s = " + seconds + " ");
   text = hs::test::replaced(text, "[membrane]", "[membrane]\nmax_iterations = 100\n");
   text = hs::test::replaced(text, "streaming = \"aa\"", "streaming = \"" + streaming + "\"");
@@ -171,8 +183,14 @@ fs::path drag_variant(const std::string& name, const std::string& seconds, const
 /// 2.5 ms; the velocity is steady from 3 ms): its last axial velocity over U_max and the IBM force on it (N). With the
 /// 4-point kernel and 5 iterations, whose smearing the force tolerance below is about (the shipped case has the 2-point
 /// kernel: with 5 iterations the cell moves at 0.992 U_max too, and the force is -2.8 pN, measured at 6 ms).
+/// The drive share belongs to membrane_force = "fluid_stress" (the reaction carries the drive itself), so the case is
+/// taken back to the coupling, friction, collision, membrane mass and one fluid it was measured with.
 std::pair<double, double> free_stiff_cell_on_axis(const std::string& name, bool drive_on_enclosed_volume) {
-  std::string text = hs::test::shipped_case_text("tube-drag");
+  std::string text = with_plasma_inside(hs::test::shipped_case_text("tube-drag"));
+  text = hs::test::replaced(text, "dissipation = \"viscosity\"", "# dissipation: the friction (default)");
+  text = hs::test::replaced(text, "collision = \"regularized\"", "collision = \"trt\"");
+  text = hs::test::replaced(text, "membrane_mass_factor = 100 ", "# membrane_mass_factor: the rule ");
+  text = hs::test::replaced(text, "membrane_force = \"ibm_reaction\"", "membrane_force = \"fluid_stress\"\ndrive_on_enclosed_volume = true");
   text = hs::test::replaced(text, "max_jeffery_periods = 6 ", "max_time_s = 0.0044 ");
   text = hs::test::replaced(text, "ibm_kernel_points = 2 ", "ibm_kernel_points = 4 ");
   text = hs::test::replaced(text, "ibm_iterations = 10 ", "ibm_iterations = 5 ");

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "resolved/cases/cell_numerics.hpp"
@@ -17,43 +19,58 @@
 namespace hs::resolved {
 namespace {
 
-TubeCellConfig read_drag_case(double reynolds, const std::string& extra_numerics = "") {
+using Edits = std::vector<std::pair<std::string, std::string>>;
+
+/// The shipped drag case (the campaign's template) at `reynolds`, with each `from` replaced by `to` (from must occur).
+TubeCellConfig read_drag_case(double reynolds, const Edits& edits = {}) {
   std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/tube-drag/case.toml");
   std::stringstream text;
   text << in.rdbuf();
   std::string toml = text.str();
   const std::string from = "reynolds = 0.5 ";
   toml.replace(toml.find(from), from.size(), "reynolds = " + std::to_string(reynolds) + " ");
-  if (!extra_numerics.empty()) toml.replace(toml.find("[numerics]\n"), 11, "[numerics]\n" + extra_numerics + "\n");
+  for (const auto& [f, t] : edits) {
+    const auto pos = toml.find(f);
+    EXPECT_NE(pos, std::string::npos) << f;
+    if (pos != std::string::npos) toml.replace(pos, f.size(), t);
+  }
   auto file = common::ConfigFile::parse(toml, "tube-drag/case.toml");
   EXPECT_EQ(file->root().section("case").string("type"), "tube-cell");   // read by the case dispatcher in the app
   return read_tube_cell(*file, false);
 }
 
+/// One fluid: the plasma's own viscosity inside the cell (ratio 1), as the campaign of sessions 10-17 ran.
+const std::pair<std::string, std::string> kPlasmaInside{"[cell]\n", "[cell]\ncytoplasm_viscosity_Pa_s = 1.025e-3\n"};
+/// The membrane mass by the default rule 1.25 nu_lu k instead of the case's stated 100.
+const std::pair<std::string, std::string> kMassRule{"membrane_mass_factor = 100 ", "# membrane_mass_factor = 100 "};
+/// Healthy cytoplasm (the default) against the shipped plasma: 6 mPa s / (1025 kg/m^3 x 1e-6 m^2/s).
+constexpr double kHealthyRatio = 6.0e-3 / 1.025e-3;
+
 TEST(TubeCellConfig, Re05KeepsTheLatticeVelocityAndScalesTheMembraneMass) {
-  const TubeCellConfig c = read_drag_case(0.5);
+  const TubeCellConfig c = read_drag_case(0.5, {kPlasmaInside, kMassRule});
   // U_max = Re nu / D = 0.01 m/s; dt = 0.04 dx / U_max = 4 us; tau = 1/2 + 3 nu dt / dx^2 = 12.5.
   EXPECT_NEAR(c.dt_s, 4.0e-6, 1e-18);
   EXPECT_NEAR(c.collision.tau, 12.5, 1e-12);
   EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 4.0 * 2.0, 1e-12);   // 1.25 nu_lu k with nu_lu = 4, k = 2
   // Spin-up: max(4 R^2 / nu = 2.5 ms = 625 steps, 10 tau = 125 steps).
   EXPECT_EQ(c.spin_up_steps, 625);
-  // Cap: 3 membrane relaxation times zeta a^2 / k_s (2.82e4 Pa s/m x (3.91 um)^2 / 2.5e-6 N/m = 0.172 s), then 6 Jeffery
-  // periods 2 pi (0.37 + 1/0.37) / gamma at r* = 0.5, gamma = 2 U_max r* / R = 400 1/s.
-  EXPECT_NEAR(membrane_relaxation_time_s(c), 2.82e4 * 3.91e-6 * 3.91e-6 / 2.5e-6, 1e-12);
-  EXPECT_NEAR(c.max_time_s, 3.0 * 2.82e4 * 3.91e-6 * 3.91e-6 / 2.5e-6 + 6.0 * 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37) / 400.0,
-              1e-12);
+  // Cap: 3 membrane relaxation times eta_m / k_s (the membrane viscosity 7e-7 N s/m of the case, no friction:
+  // 7e-7 / 2.5e-6 N/m = 0.28 s), then 6 Jeffery periods 2 pi (0.37 + 1/0.37) / gamma at r* = 0.5, gamma = 2 U_max r* / R
+  // = 400 1/s.
+  EXPECT_NEAR(membrane_relaxation_time_s(c), 7.0e-7 / 2.5e-6, 1e-12);
+  EXPECT_NEAR(c.max_time_s, 3.0 * 7.0e-7 / 2.5e-6 + 6.0 * 2.0 * std::numbers::pi * (0.37 + 1.0 / 0.37) / 400.0, 1e-12);
 }
 
 TEST(TubeCellConfig, CollisionNamesTheOperator) {
-  EXPECT_EQ(read_drag_case(0.5).collision.model, CollisionModel::trt);   // the default
-  EXPECT_EQ(read_drag_case(0.5, "collision = \"regularized\"").collision.model, CollisionModel::regularized);
-  EXPECT_EQ(read_drag_case(0.5, "collision = \"bgk\"").collision.model, CollisionModel::bgk);
-  EXPECT_THROW(read_drag_case(0.5, "collision = \"mrt\""), common::ConfigError);
+  const std::string shipped = "collision = \"regularized\"";
+  EXPECT_EQ(read_drag_case(0.5).collision.model, CollisionModel::regularized);   // the case's
+  EXPECT_EQ(read_drag_case(0.5, {{shipped, "collision = \"trt\""}}).collision.model, CollisionModel::trt);
+  EXPECT_EQ(read_drag_case(0.5, {{shipped, "collision = \"bgk\""}}).collision.model, CollisionModel::bgk);
+  EXPECT_THROW(read_drag_case(0.5, {{shipped, "collision = \"mrt\""}}), common::ConfigError);
 }
 
 TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
-  const TubeCellConfig c = read_drag_case(0.1);
+  const TubeCellConfig c = read_drag_case(0.1, {kPlasmaInside, kMassRule});
   // At 0.04 tau would be 60.5 > the case's max_tau = 15.5: dt = 15 dx^2 / (3 nu) = 5 us, lattice velocity
   // 0.002 m/s x dt / dx = 0.01.
   EXPECT_NEAR(c.collision.tau, 15.5, 1e-12);
@@ -64,24 +81,24 @@ TEST(TubeCellConfig, LowReCapsTauByLoweringTheLatticeVelocity) {
 }
 
 TEST(TubeCellConfig, TheCytoplasmsTauIsTheOneTheCapBounds) {
-  // Without the key: one fluid, the campaign's numbers above.
-  EXPECT_EQ(read_drag_case(0.5).viscosity_ratio, 1.0);
-  // 6 mPa s against 1.025 mPa s: ratio 5.854. At Re 0.5 tau would be 12.5 outside and 1/2 + 5.854 x 12 = 70.7 inside,
-  // above the case's max_tau 15.5: the cap holds inside, tau_out = 1/2 + 15 / 5.854 = 3.0625 (dt 4.1x smaller), and
-  // the membrane mass follows the cytoplasm's nu_lu = 5: 1.25 x 5 x 2.
-  std::ifstream in(std::string(HS_SOURCE_DIR) + "/cases/resolved/tube-drag/case.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string toml = text.str();
-  toml.replace(toml.find("[cell]\n"), 7, "[cell]\ncytoplasm_viscosity_Pa_s = 6.0e-3\n");
-  auto file = common::ConfigFile::parse(toml, "tube-drag/case.toml");
-  EXPECT_EQ(file->root().section("case").string("type"), "tube-cell");   // read by the case dispatcher in the app
-  const TubeCellConfig c = read_tube_cell(*file, false);
-  const double ratio = 6.0e-3 / 1.025e-3;
-  EXPECT_NEAR(c.viscosity_ratio, ratio, 1e-12);
-  EXPECT_NEAR(c.collision.tau, 0.5 + 15.0 / ratio, 1e-12);
-  EXPECT_NEAR(c.inner_collision.tau, 15.5, 1e-12);
-  EXPECT_NEAR(c.membrane_mass_factor, 1.25 * 5.0 * 2.0, 1e-9);
+  // The plasma's own viscosity: one fluid, the numbers above.
+  EXPECT_EQ(read_drag_case(0.5, {kPlasmaInside}).viscosity_ratio, 1.0);
+  // Without the key: 6 mPa s against 1.025 mPa s, ratio 5.854. At Re 0.5 tau would be 12.5 outside and
+  // 1/2 + 5.854 x 12 = 70.7 inside, above the case's max_tau 15.5: the cap holds inside, tau_out = 1/2 + 15 / 5.854 =
+  // 3.0625 (dt 0.854 us, 4.7x smaller), at every Re of the campaign (0.1 would need 60.5 with plasma). The membrane
+  // mass is the case's 100; by the rule it follows the cytoplasm's nu_lu = 5: 1.25 x 5 x 2.
+  for (const double re : {0.5, 0.1}) {
+    const TubeCellConfig c = read_drag_case(re);
+    EXPECT_NEAR(c.viscosity_ratio, kHealthyRatio, 1e-12);
+    EXPECT_NEAR(c.collision.tau, 0.5 + 15.0 / kHealthyRatio, 1e-12);
+    EXPECT_NEAR(c.collision.tau, 3.0625, 1e-12);
+    EXPECT_NEAR(c.inner_collision.tau, 15.5, 1e-12);
+    EXPECT_NEAR(c.dt_s, 2.5625e-12 / 3.0e-6, 1e-20);
+    EXPECT_NEAR(c.membrane_mass_factor, 100.0, 1e-12);
+  }
+  EXPECT_NEAR(read_drag_case(0.5, {kMassRule}).membrane_mass_factor, 1.25 * 5.0 * 2.0, 1e-9);
+  // Spin-up: 4 R^2 / nu = 2.5 ms = 2927 steps of 0.854 us.
+  EXPECT_EQ(read_drag_case(0.5).spin_up_steps, 2927);
 }
 
 TEST(TubeCellConfig, TheWeissenbergBoundIsRefusedWithoutAReferenceShearRate) {
