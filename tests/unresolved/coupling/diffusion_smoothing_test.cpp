@@ -8,18 +8,14 @@
 
 #include "common/geometry/tube.hpp"
 #include "unresolved/coupling/diffusion_smoothing.hpp"
+#include "../everywhere_shape.hpp"
 
 namespace {
 
 using hs::common::Vec3;
 using namespace hs::unresolved;
 
-/// Fluid everywhere (a box's own faces would be solid nodes, and a periodic slab has none).
-class Everywhere final : public hs::common::Shape {
- public:
-  [[nodiscard]] double signed_distance(const Vec3&) const override { return -1.0; }
-  [[nodiscard]] hs::common::Box3 bounds() const override { return {{0, 0, 0}, {1, 1, 1}}; }
-};
+using hs::test::Everywhere;
 
 /// A periodic slab, `cells` along x and 2 across: a plane source at x index 0, smoothed over l.
 struct PlaneSource {

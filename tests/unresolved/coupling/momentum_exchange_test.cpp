@@ -12,17 +12,14 @@
 #include "closures/register_builtin.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
+#include "../everywhere_shape.hpp"
 
 namespace {
 
 using hs::common::Vec3;
 using namespace hs::unresolved;
 
-class Everywhere final : public hs::common::Shape {
- public:
-  [[nodiscard]] double signed_distance(const Vec3&) const override { return -1.0; }
-  [[nodiscard]] hs::common::Box3 bounds() const override { return {{0, 0, 0}, {1, 1, 1}}; }
-};
+using hs::test::Everywhere;
 
 CouplingClosures stokes() {
   CouplingClosures c;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "unresolved/fvm/fvm_solver.hpp"
+#include "../everywhere_shape.hpp"
 
 namespace {
 
@@ -16,11 +17,7 @@ using hs::unresolved::FvmGridSpec;
 using hs::unresolved::FvmSolver;
 using hs::unresolved::SideType;
 
-class Everywhere final : public hs::common::Shape {
- public:
-  [[nodiscard]] double signed_distance(const Vec3&) const override { return -1.0; }
-  [[nodiscard]] hs::common::Box3 bounds() const override { return {{0, 0, 0}, {1, 1, 1}}; }
-};
+using hs::test::Everywhere;
 
 TEST(CouplingFields, ImplicitDragAndExplicitForceRelaxToTheirBalance) {
   const Everywhere all;
