@@ -162,17 +162,19 @@ void write_cell_frames(const CellSimulation& s, const common::RunContext& ctx, i
   fluid_pvd->add(t, "vtk/" + fname);
 }
 
-CellOutputs open_cell_outputs(const common::RunContext& ctx, const std::vector<std::string>& columns) {
+CellOutputs open_cell_outputs(const common::RunContext& ctx, const std::vector<std::string>& columns,
+                              std::string_view series_file, bool frames) {
   CellOutputs out;
   if (ctx.rank() != 0) return out;
-  out.csv = std::make_unique<common::CsvWriter>(ctx.folder().file("timeseries.csv"), columns);
+  out.csv = std::make_unique<common::CsvWriter>(ctx.folder().file(series_file), columns);
+  if (!frames) return out;
   out.membrane_pvd = std::make_unique<common::PvdSeries>(ctx.folder().file("membrane.pvd"));
   out.fluid_pvd = std::make_unique<common::PvdSeries>(ctx.folder().file("fields.pvd"));
   return out;
 }
 
 void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samples, const common::RunContext& ctx,
-                           long step, int frame) {
+                           long step, int frame, int stage) {
   common::Checkpoint cp;
   cp.put("populations", s.lattice->raw_populations());
   const std::span<double> field = s.lattice->force_field();
@@ -186,8 +188,13 @@ void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samp
   cp.meta()["step"] = step;
   cp.meta()["coupling_steps"] = st.steps;
   cp.meta()["frame"] = frame;
+  cp.meta()["stage"] = stage;
   cp.meta()["streaming"] = s.lattice->streaming() == Streaming::aa ? "aa" : "two_buffer";   // the population layout differs between the two
   cp.write(ctx.folder().checkpoint_dir(), ctx.rank());
+}
+
+int checkpoint_stage(const common::RunContext& ctx) {
+  return common::Checkpoint::read(ctx.folder().checkpoint_dir(), ctx.rank()).meta().value("stage", 1);
 }
 
 long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const common::RunContext& ctx, int& frame) {
@@ -241,15 +248,15 @@ bool run_sampled(common::TimeLoop& loop, CellSimulation& s, const common::RunCon
     const AfterSample next = agree_after_sample(schedule, ctx.rank());
     if (next.stop_signal != 0) {
       progress.finish();
-      write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
+      write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame, hooks.checkpoint_stage);
       throw common::RunInterrupted(fmt::format("stopped by signal {} at step {} of {}; checkpoint written, continue "
                                                "with --resume", next.stop_signal, loop.step(), loop.end_step()),
                                    next.stop_signal);
     }
-    if (next.checkpoint) write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
+    if (next.checkpoint) write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame, hooks.checkpoint_stage);
   }
   progress.finish();
-  write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame);
+  write_cell_checkpoint(s, hooks.pack(), ctx, loop.step(), frame, hooks.checkpoint_stage);
   return done;
 }
 

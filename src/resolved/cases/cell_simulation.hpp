@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -97,13 +98,19 @@ struct CellOutputs {
   }
 };
 
-/// Opens the outputs with the time-series `columns` (rank 0).
-[[nodiscard]] CellOutputs open_cell_outputs(const common::RunContext& ctx, const std::vector<std::string>& columns);
+/// Opens the outputs with the time-series `columns` (rank 0): `series_file` in the run folder, and with `frames` the
+/// membrane and fluid ParaView series (a later stage of a run writes a time series of its own and no frames).
+[[nodiscard]] CellOutputs open_cell_outputs(const common::RunContext& ctx, const std::vector<std::string>& columns,
+                                            std::string_view series_file = "timeseries.csv", bool frames = true);
 
 /// Everything needed to continue bit for bit: populations, force field, membrane, markers and the case's packed
-/// samples (one file per rank), written atomically.
+/// samples (one file per rank), written atomically; `stage` (1 unless a case runs stages, as tube-cell's
+/// half-time-step stage) is kept in the header.
 void write_cell_checkpoint(const CellSimulation& s, std::span<const double> samples, const common::RunContext& ctx,
-                           long step, int frame);
+                           long step, int frame, int stage = 1);
+
+/// The stage whose state the run folder's checkpoint holds (1 for checkpoints written before stages existed).
+[[nodiscard]] int checkpoint_stage(const common::RunContext& ctx);
 
 /// Restores write_cell_checkpoint(): fills `samples` and `frame`, returns the step to continue from.
 long read_cell_checkpoint(CellSimulation& s, std::vector<double>& samples, const common::RunContext& ctx, int& frame);
@@ -113,6 +120,7 @@ struct SampledRunHooks {
   std::function<void()> sample;                      // after each block of sample_every steps, on all ranks
   std::function<bool()> done;                        // stop early (e.g. settled); may be empty
   std::function<std::vector<double>()> pack;         // the case's samples for checkpoints
+  int checkpoint_stage = 1;                          // written into each checkpoint's header (write_cell_checkpoint)
 };
 
 /// Runs `loop` in blocks of `sample_every_steps` until its end or hooks.done(): lattice watchdog, sample, progress,

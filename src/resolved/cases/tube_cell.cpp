@@ -3,6 +3,8 @@
 #include "resolved/cases/tube_cell.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <numbers>
 
@@ -12,6 +14,7 @@
 #include "common/dimensionless_groups.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
+#include "common/io/atomic_file.hpp"
 #include "common/run_context.hpp"
 #include "resolved/cases/cell_simulation.hpp"
 #include "resolved/cases/lattice_budget.hpp"
@@ -121,37 +124,62 @@ void print_result(common::Log& log, const nlohmann::json& results, bool drag, bo
              settled ? "settled" : "NOT settled (stopped at max_time_s)");
 }
 
-}  // namespace
+/// What one stage of a run leaves: its series' results, whether it settled, and its numerics block.
+struct StageOutcome {
+  nlohmann::json results;
+  bool settled = false;
+  std::size_t samples = 0;
+  double simulated_s = 0.0;
+  nlohmann::json numerics;
+};
 
-int run_tube_cell(const common::CaseRequest& request) {
-  const TubeCellConfig c = read_tube_cell(*request.config, request.quick);
-  require_lattice_memory(*request.config, lattice_nodes(c),
-                         {{"[geometry] radius_m", c.radius_m, true}, {"[geometry] length_m", c.length_m, true},
-                          {"[numerics] dx_m", c.dx_m, true}});
-  common::RunContext ctx = common::RunContext::start(request, "tube-cell");
-  auto run = build(c);
-  TubeCellRun& r = *run;
-  if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
-  ctx.log().info("tube-cell ({}): r* = {}, Re = {}, U_max = {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
-                 "tau = {:.3f}, peak lattice velocity {:.4g}, membrane every {} steps, viscosity ratio {:.4g} "
-                 "(cytoplasm tau {:.3f})",
-                 c.setup == TubeCellSetup::drag ? "drag" : "lift", c.radial_position, c.reynolds, c.u_max_m_s,
-                 r.nodes[0], r.nodes[1], r.nodes[2], c.dx_m, c.dt_s, c.collision.tau, c.lattice_velocity,
-                 c.membrane_every, c.viscosity_ratio, c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau);
-  if (const std::string w = kernel_width_warning(numerics_of(c).ibm.kernel, c.dx_m); !w.empty()) ctx.log().warning("{}", w);
+/// Stage 1 is the case as given; stage 2, with extrapolate_lattice_memory, the same case at half the time step.
+constexpr int kHalfTimeStepStage = 2;
+/// Stage 1's outcome and final membrane, kept in the run folder when stage 2 follows (resume starts stage 2 from it).
+constexpr const char* kStageOneRecord = "stage1.json";
+
+nlohmann::json stage_numerics(const TubeCellRun& r, const common::TimeLoop& loop, const common::RunContext& ctx) {
+  const TubeCellConfig& c = r.c;
+  const double simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
+  return {{"dx_m", c.dx_m},
+          {"dt_s", c.dt_s},
+          {"tau", c.collision.tau},
+          // The lattice fluid's memory against the flow's time at the wall, where the shear is largest:
+          // gamma_wall (tau - 1/2) dt (docs/resolved-coupling.md, "The lattice fluid's memory"). The
+          // cytoplasm's is viscosity_ratio times this at the same shear rate.
+          {"lattice_weissenberg", common::poiseuille_shear_rate(c.u_max_m_s, c.radius_m, c.radius_m) *
+                                      (c.collision.tau - 0.5) * c.dt_s},
+          {"viscosity_ratio", c.viscosity_ratio},   // cytoplasm / plasma; 1: one fluid
+          {"tau_cytoplasm", c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau},
+          {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
+          {"membrane_mass_factor", c.membrane_mass_factor},
+          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
+          {"spin_up_steps", c.spin_up_steps},
+          {"steps", loop.step()},
+          {"simulated_time_s", simulated_s},
+          {"wall_s_per_simulated_ms", ctx.wall_seconds() / (1e3 * simulated_s)},
+          {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps},
+          {"membrane_solve", membrane_solve_summary(r.membrane->statistics())}};
+}
+
+/// Runs one stage to its cap or until it settles: from the checkpoint with `resume`, else from the state `r` was built
+/// (or seeded) with. Stage 1 writes timeseries.csv and the ParaView series; stage 2 timeseries_half_dt.csv.
+StageOutcome run_stage(TubeCellRun& r, const common::CaseRequest& request, common::RunContext& ctx, int stage, bool resume) {
+  const TubeCellConfig& c = r.c;
   TubeCellSeries series(c, r.membrane->rest_volume_m3());
   int frame = 0;
   long first_step = 0;
-  if (ctx.resuming()) {
+  if (resume) {
     std::vector<double> packed;
     first_step = read_cell_checkpoint(r, packed, ctx, frame);
     series.unpack(packed);
-    ctx.log().info("resumed at step {} with {} samples", first_step, series.size());
+    ctx.log().info("resumed {}at step {} with {} samples", stage == 1 ? "" : "stage 2 ", first_step, series.size());
   }
-  const CellOutputs out = open_cell_outputs(ctx, tube_cell_columns());
+  const bool first = stage == 1;
+  const CellOutputs out = open_cell_outputs(ctx, tube_cell_columns(), first ? "timeseries.csv" : "timeseries_half_dt.csv", first);
   for (const auto& s : series.samples()) out.row(series.row(s));   // rows up to the checkpoint (resume)
   const long max_steps = r.units.to_lattice_steps(c.max_time_s);
-  const long frame_every = c.vtk_every_s > 0.0 ? r.units.to_lattice_steps(c.vtk_every_s) : 0;
+  const long frame_every = first && c.vtk_every_s > 0.0 ? r.units.to_lattice_steps(c.vtk_every_s) : 0;
   Vec3 force_sum_lu, traction_sum_N;
   long summed = 0;
   common::TimeLoop loop(max_steps, first_step);
@@ -163,7 +191,7 @@ int run_tube_cell(const common::CaseRequest& request) {
     ++summed;
   });
   loop.every(frame_every, "write_frames", [&] { out.write_frame(r, ctx, frame); });
-  common::Progress progress("tube-cell", max_steps, ctx.show_progress() && !request.quiet);
+  common::Progress progress(first ? "tube-cell" : "tube-cell, half dt", max_steps, ctx.show_progress() && !request.quiet);
   const SampledRunHooks hooks{
       .sample =
           [&] {
@@ -186,49 +214,148 @@ int run_tube_cell(const common::CaseRequest& request) {
             const std::size_t n = series.size();
             return n % std::max<std::size_t>(1, n / 100) == 0 && series.settled();
           },
-      .pack = [&] { return series.pack(); }};
+      .pack = [&] { return series.pack(); },
+      .checkpoint_stage = stage};
   const bool settled = run_sampled(loop, r, ctx, c.sample_every_steps, c.checkpoint_every_wall_s, progress, hooks, frame);
-  out.write_frame(r, ctx, frame);
-  ctx.log().info("{} after {} steps ({:.4g} s simulated); wall time per stage:\n{}",
+  if (first) out.write_frame(r, ctx, frame);
+  ctx.log().info("{}{} after {} steps ({:.4g} s simulated); wall time per stage:\n{}", stage == 1 ? "" : "stage 2: ",
                  settled ? "settled" : "stopped at max_time_s (NOT settled)", loop.step(),
                  r.units.to_si_time(static_cast<double>(loop.step())), loop.timing_table());
-  const double simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
+  StageOutcome o;
+  o.results = series.results();
+  o.settled = settled;
+  o.samples = series.size();
+  o.simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
+  o.numerics = stage_numerics(r, loop, ctx);
+  o.numerics["timings"] = loop.timings();
+  return o;
+}
+
+/// Stage 2 starts from stage 1's membrane (positions; velocities zero, as its fluid starts at rest): the markers follow.
+void seed_membrane(TubeCellRun& r, const std::vector<double>& stage_one_membrane) {
+  const std::size_t n = static_cast<std::size_t>(r.membrane->vertex_count());
+  std::vector<double> state(stage_one_membrane.begin(), stage_one_membrane.begin() + static_cast<std::ptrdiff_t>(9 * n + 3));
+  std::fill(state.begin() + static_cast<std::ptrdiff_t>(3 * n), state.begin() + static_cast<std::ptrdiff_t>(6 * n), 0.0);
+  r.membrane->restore_state(state);   // positions, zero velocities, external forces, centre target; empty solver memory
+  CouplingState markers;
+  for (const Vec3& x : r.membrane->positions_m()) {
+    markers.marker_x_lu.push_back((x - r.origin_m) / r.c.dx_m);
+    markers.marker_u_lu.push_back({});
+  }
+  r.cell->restore(markers);
+  update_cytoplasm(r);
+}
+
+void print_stage(common::Log& log, const TubeCellConfig& c, const TubeCellRun& r, int stage) {
+  log.info("tube-cell ({}){}: r* = {}, Re = {}, U_max = {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
+           "tau = {:.3f}, peak lattice velocity {:.4g}, membrane every {} steps, viscosity ratio {:.4g} "
+           "(cytoplasm tau {:.3f})",
+           c.setup == TubeCellSetup::drag ? "drag" : "lift", stage == 1 ? "" : ", stage 2 at half the time step",
+           c.radial_position, c.reynolds, c.u_max_m_s, r.nodes[0], r.nodes[1], r.nodes[2], c.dx_m, c.dt_s,
+           c.collision.tau, c.lattice_velocity, c.membrane_every, c.viscosity_ratio,
+           c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau);
+}
+
+/// Replaces the period means with their values at lattice Weissenberg number 0 (linear through the two stages) and
+/// keeps both stages' values under results.lattice_memory.
+void extrapolate_results(nlohmann::json& results, const StageOutcome& one, const StageOutcome& two) {
+  const double wi_1 = one.numerics["lattice_weissenberg"].get<double>();
+  const double wi_2 = two.numerics["lattice_weissenberg"].get<double>();
+  nlohmann::json memory = {{"lattice_weissenberg", {wi_1, wi_2}}, {"stage2_settled", two.settled},
+                           {"stage2_samples", two.samples}, {"stage2_periods_averaged", two.results.value("periods_averaged", 0)}};
+  for (const char* q : {"cd", "cl", "di"}) {
+    const std::string mean = std::string(q) + "_mean";
+    const std::string spread = std::string(q) + "_spread";
+    const double v1 = one.results.value(mean, std::nan(""));
+    const double v2 = two.results.value(mean, std::nan(""));
+    memory[q] = {v1, v2};
+    results[mean] = extrapolated_to_zero_weissenberg(v1, wi_1, v2, wi_2);
+    // Error propagation of the linear extrapolation: |d Q0 / d Q2| = wi_1 / (wi_1 - wi_2), |d Q0 / d Q1| = wi_2 / (...).
+    const double w = wi_1 - wi_2;
+    results[spread] = wi_1 / w * two.results.value(spread, 0.0) + wi_2 / w * one.results.value(spread, 0.0);
+  }
+  memory["note"] = "cd/cl/di_mean are the values at Wi -> 0, linear in Wi through stage 1 and stage 2 (half dt)";
+  results["lattice_memory"] = memory;
+}
+
+}  // namespace
+
+int run_tube_cell(const common::CaseRequest& request) {
+  const TubeCellConfig c = read_tube_cell(*request.config, request.quick);
+  require_lattice_memory(*request.config, lattice_nodes(c),
+                         {{"[geometry] radius_m", c.radius_m, true}, {"[geometry] length_m", c.length_m, true},
+                          {"[numerics] dx_m", c.dx_m, true}});
+  common::RunContext ctx = common::RunContext::start(request, "tube-cell");
+  // A resumed run whose stage 1 had finished continues with stage 2 (from its checkpoint, or from stage 1's membrane).
+  const std::filesystem::path record_file = ctx.folder().file(kStageOneRecord);
+  const bool stage_one_done = c.extrapolate_lattice_memory && ctx.resuming() && std::filesystem::exists(record_file);
+  StageOutcome one;
+  std::vector<double> stage_one_membrane;
+  nlohmann::json cell_stokes;
+  if (!stage_one_done) {
+    auto run = build(c);
+    if (ctx.rank() == 0) run->units.write(ctx.folder().file("units.txt"));
+    print_stage(ctx.log(), c, *run, 1);
+    if (const std::string w = kernel_width_warning(numerics_of(c).ibm.kernel, c.dx_m); !w.empty()) ctx.log().warning("{}", w);
+    one = run_stage(*run, request, ctx, 1, ctx.resuming());
+    one.numerics["cell_stokes_number"] = cell_stokes_number(c, run->membrane->rest_volume_m3());
+    stage_one_membrane = run->membrane->state();
+    if (c.extrapolate_lattice_memory && ctx.rank() == 0) {
+      const nlohmann::json record = {{"results", one.results}, {"settled", one.settled}, {"samples", one.samples},
+                                     {"simulated_s", one.simulated_s}, {"numerics", one.numerics},
+                                     {"membrane_state", stage_one_membrane}};
+      common::write_file_atomic(record_file, record.dump());
+    }
+  } else {
+    std::ifstream in(record_file);
+    const nlohmann::json record = nlohmann::json::parse(in);
+    one.results = record["results"];
+    one.settled = record["settled"].get<bool>();
+    one.samples = record["samples"].get<std::size_t>();
+    one.simulated_s = record["simulated_s"].get<double>();
+    one.numerics = record["numerics"];
+    stage_one_membrane = record["membrane_state"].get<std::vector<double>>();
+    ctx.log().info("stage 1 finished before the interruption ({}); continuing with stage 2", kStageOneRecord);
+  }
+  StageOutcome two;
+  if (c.extrapolate_lattice_memory) {
+    const TubeCellConfig h = half_time_step_stage(c);
+    auto run = build(h);
+    print_stage(ctx.log(), h, *run, kHalfTimeStepStage);
+    const bool resume_two = stage_one_done && checkpoint_stage(ctx) == kHalfTimeStepStage;
+    if (!resume_two) seed_membrane(*run, stage_one_membrane);
+    two = run_stage(*run, request, ctx, kHalfTimeStepStage, resume_two);
+  }
   nlohmann::json summary;
-  summary["results"] = series.results();
+  summary["results"] = one.results;
+  const bool settled = one.settled && (!c.extrapolate_lattice_memory || two.settled);
+  if (c.extrapolate_lattice_memory) extrapolate_results(summary["results"], one, two);
   summary["results"]["settled"] = settled;
   summary["results"]["setup"] = c.setup == TubeCellSetup::drag ? "drag" : "lift";
   summary["groups"] = groups_of(summary["results"]);
-  summary["groups"]["cell_stokes_number"] = cell_stokes_number(c, r.membrane->rest_volume_m3());
-  summary["numerics"] = {{"dx_m", c.dx_m},
-                         {"dt_s", c.dt_s},
-                         {"tau", c.collision.tau},
-                         // The lattice fluid's memory against the flow's time at the wall, where the shear is largest:
-                         // gamma_wall (tau - 1/2) dt (docs/resolved-coupling.md, "The lattice fluid's memory"). The
-                         // cytoplasm's is viscosity_ratio times this at the same shear rate.
-                         {"lattice_weissenberg", common::poiseuille_shear_rate(c.u_max_m_s, c.radius_m, c.radius_m) *
-                                                     (c.collision.tau - 0.5) * c.dt_s},
-                         {"viscosity_ratio", c.viscosity_ratio},   // cytoplasm / plasma; 1: one fluid
-                         {"tau_cytoplasm", c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau},
-                         {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
-                         {"membrane_mass_factor", c.membrane_mass_factor},
-                         {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
-                         {"spin_up_steps", c.spin_up_steps},
-                         {"steps", loop.step()},
-                         {"simulated_time_s", simulated_s},
-                         {"wall_s_per_simulated_ms", ctx.wall_seconds() / (1e3 * simulated_s)},
-                         {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps},
-                         {"membrane_solve", membrane_solve_summary(r.membrane->statistics())}};
-  summary["timings"] = loop.timings();
+  summary["groups"]["cell_stokes_number"] = one.numerics["cell_stokes_number"];
+  summary["timings"] = one.numerics["timings"];
+  summary["numerics"] = one.numerics;
+  summary["numerics"].erase("timings");
+  summary["numerics"].erase("cell_stokes_number");
+  if (c.extrapolate_lattice_memory) {
+    summary["numerics"]["half_time_step_stage"] = two.numerics;
+    summary["numerics"]["half_time_step_stage"].erase("timings");
+  }
   // The case's check: the forces settle (constant, or periodic for settle_periods) before max_time_s. A --quick run
   // stops after a few samples, too early to settle: it says so instead of failing (the one rule, docs/outputs.md).
   common::CheckList checks;
-  if (settled || !request.quick) {
-    checks.expect("the forces settle before max_time_s", settled,
-                  fmt::format("{} samples, {:.4g} s simulated of max_time_s {:.4g}", series.size(),
-                              simulated_s, c.max_time_s));
-  } else {
-    checks.skip("the forces settle before max_time_s",
-                fmt::format("--quick: {} samples, too few to settle", series.size()));
+  const auto expect_settled = [&](const std::string& what, const StageOutcome& o, double cap_s) {
+    if (o.settled || !request.quick) {
+      checks.expect(what, o.settled, fmt::format("{} samples, {:.4g} s simulated of max_time_s {:.4g}", o.samples,
+                                                 o.simulated_s, cap_s));
+    } else {
+      checks.skip(what, fmt::format("--quick: {} samples, too few to settle", o.samples));
+    }
+  };
+  expect_settled("the forces settle before max_time_s", one, c.max_time_s);
+  if (c.extrapolate_lattice_memory) {
+    expect_settled("the half-time-step stage settles (lattice-memory extrapolation)", two, half_time_step_stage(c).max_time_s);
   }
   ctx.write_summary(summary, checks);
   print_result(ctx.log(), summary["results"], c.setup == TubeCellSetup::drag, settled);

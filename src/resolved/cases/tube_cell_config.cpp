@@ -59,7 +59,32 @@ void read_run(hs::common::ConfigSection r, hs::common::ConfigSection o, TubeCell
   c.vtk_every_s = o.non_negative_or("vtk_every_s", 0.0);
 }
 
+long spin_up_steps_of(const TubeCellConfig& c) {
+  return std::max(std::lround(kSpinUpViscousTimes * c.radius_m * c.radius_m / c.kinematic_viscosity_m2_s / c.dt_s),
+                  std::lround(kSpinUpTaus * c.collision.tau));
+}
+
 }  // namespace
+
+TubeCellConfig half_time_step_stage(const TubeCellConfig& c) {
+  TubeCellConfig h = c;
+  h.dt_s = 0.5 * c.dt_s;
+  h.lattice_velocity = 0.5 * c.lattice_velocity;
+  h.collision.tau = 0.5 + 0.5 * (c.collision.tau - 0.5);               // nu = c_s^2 (tau - 1/2) dx^2 / dt kept
+  h.inner_collision.tau = 0.5 + 0.5 * (c.inner_collision.tau - 0.5);
+  h.max_tau = std::max(h.collision.tau, h.viscosity_ratio != 1.0 ? h.inner_collision.tau : 0.0);
+  h.spin_up_steps = spin_up_steps_of(h);
+  h.sample_every_steps = 2 * c.sample_every_steps;                      // the same sampling in seconds
+  h.transient_s = kHalfTimeStepStageSpinUps * static_cast<double>(h.spin_up_steps) * h.dt_s;
+  // A run capped inside its transient (--quick) keeps its cap; otherwise as long after the start-up as the first stage.
+  h.max_time_s = c.max_time_s <= c.transient_s ? c.max_time_s : h.transient_s + (c.max_time_s - c.transient_s);
+  h.extrapolate_lattice_memory = false;
+  return h;
+}
+
+double extrapolated_to_zero_weissenberg(double value_1, double wi_1, double value_2, double wi_2) {
+  return value_2 - (value_1 - value_2) * wi_2 / (wi_1 - wi_2);
+}
 
 double jeffery_period_s(const TubeCellConfig& c) {
   const double gamma = common::poiseuille_shear_rate(c.u_max_m_s, c.radial_position * c.radius_m, c.radius_m);
@@ -90,6 +115,7 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   c.membrane = parse_membrane_config(membrane);
   CellNumerics numerics = read_cell_numerics(root.section("numerics"));
   numerics.viscosity_ratio = viscosity_ratio;
+  c.extrapolate_lattice_memory = root.section("numerics").boolean_or("extrapolate_lattice_memory", false);
   read_run(root.section("run"), root.section_or_empty("output"), c);
   file.finish();
   c.u_max_m_s = c.reynolds * c.kinematic_viscosity_m2_s / (2.0 * c.radius_m);
@@ -104,8 +130,8 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
     }
     c.max_time_s = kMembraneTransientTimes * membrane_relaxation_time_s(c) + c.max_jeffery_periods * jeffery_period_s(c);
   }
-  c.spin_up_steps = std::max(std::lround(kSpinUpViscousTimes * c.radius_m * c.radius_m / c.kinematic_viscosity_m2_s / c.dt_s),
-                             std::lround(kSpinUpTaus * c.collision.tau));
+  c.spin_up_steps = spin_up_steps_of(c);
+  c.transient_s = kMembraneTransientTimes * membrane_relaxation_time_s(c);
   c.sample_every_steps = std::max(k, k * std::lround(c.sample_every_s / (c.dt_s * static_cast<double>(k))));
   c.sample_every_s = static_cast<double>(c.sample_every_steps) * c.dt_s;
   if (quick) c.max_time_s = std::min(c.max_time_s, static_cast<double>(kQuickSamples * c.sample_every_steps) * c.dt_s);

@@ -40,6 +40,7 @@ struct TubeCellConfig {
   TractionArea traction_area;       // which area the sampled fluid stress acts on
   bool drive_on_enclosed_volume = true;    // CellNumerics: the body-force share the sampled tractions miss
   MembraneForce membrane_force = MembraneForce::fluid_stress;   // CellNumerics: stress sampling or the IBM reaction
+  bool extrapolate_lattice_memory = false;   // a second stage at half the time step; results extrapolated to Wi -> 0
   // [run]
   double max_time_s;                // cap on simulated time
   double max_jeffery_periods;       // or the cap in Jeffery periods at r* (0: not given), counted after the membrane
@@ -56,6 +57,7 @@ struct TubeCellConfig {
   double dt_s;
   long sample_every_steps;
   long spin_up_steps;               // the drive is switched on smoothly over these steps
+  double transient_s;               // start-up discarded before settling is judged (kMembraneTransientTimes tau_m)
 };
 
 /// Jeffery period 2 pi (r_e + 1/r_e) / gamma_dot of a spheroid of aspect ratio r_e = 0.37 (the RBC's thickness over
@@ -72,6 +74,20 @@ double membrane_relaxation_time_s(const TubeCellConfig& c);
 
 /// Membrane relaxation times discarded as start-up transient before a tube-cell run may settle (e^-3 = 5 % left).
 inline constexpr double kMembraneTransientTimes = 3.0;
+
+/// Spin-up times that start the half-time-step stage (its membrane starts settled, the fluid at rest): one to carry the
+/// drive (4 R^2 / nu, the spin-up), two more for the flow around the cell and its tractions to follow.
+inline constexpr double kHalfTimeStepStageSpinUps = 3.0;
+
+/// The second stage of a run with extrapolate_lattice_memory (docs/resolved-coupling.md, "Extrapolating the lattice
+/// memory"): the same case at half the time step, so tau - 1/2 halves at the same dx and the lattice Weissenberg number
+/// gamma (tau - 1/2) dt falls to a quarter; it starts from the first stage's settled membrane, so its start-up is
+/// kHalfTimeStepStageSpinUps spin-ups instead of the membrane transient, and it has as long after it as the first.
+[[nodiscard]] TubeCellConfig half_time_step_stage(const TubeCellConfig& c);
+
+/// The value at lattice Weissenberg number 0 from two stages, linear in Wi (measured linear at r* 0.7, Re 0.5 over
+/// Wi 3.5e-4 ... 1.75e-3 at the healthy viscosity ratio: data/resolved-v2/checks/2026-12-02_wi_ratio5.85/).
+[[nodiscard]] double extrapolated_to_zero_weissenberg(double value_1, double wi_1, double value_2, double wi_2);
 
 /// Reads and checks the whole case strictly. `quick` caps the run at 40 samples (CI); dx is kept, because at
 /// dx = 2 um the 258-vertex mesh is denser than the lattice (mean edge ~0.35 lu) and multi-direct forcing

@@ -152,9 +152,10 @@ bool TubeCellSeries::settled() const {
 }
 
 std::size_t TubeCellSeries::transient_samples() const {
-  // The first quarter of the series, and at least kMembraneTransientTimes membrane relaxation times, during which the
-  // cell keeps close to its rest shape (DI ~0.50) whatever the flow (docs/resolved-coupling.md "The membrane transient").
-  const double transient_s = kMembraneTransientTimes * membrane_relaxation_time_s(config_);
+  // The first quarter of the series, and at least the config's transient_s (kMembraneTransientTimes membrane relaxation
+  // times, during which the cell keeps close to its rest shape, DI ~0.50, whatever the flow: docs/resolved-coupling.md
+  // "The membrane transient"; a few spin-ups for a stage that starts from a settled membrane).
+  const double transient_s = config_.transient_s;
   return std::max(static_cast<std::size_t>(kTransientFraction * static_cast<double>(samples_.size())),
                   static_cast<std::size_t>(std::ceil(transient_s / config_.sample_every_s)));
 }

@@ -187,6 +187,36 @@ TEST(TubeCellSeries, NothingSettlesWithinTheMembraneTransient) {
   EXPECT_FALSE(settled_early);
 }
 
+TEST(TubeCellConfig, HalfTimeStepStageQuartersTheLatticeWeissenbergAtTheSameViscosity) {
+  // The template at Re 0.5 (healthy cytoplasm): tau 3.06 outside, 15.5 inside, dt 0.854 us.
+  const TubeCellConfig c = read_drag_case(0.5);
+  const TubeCellConfig h = half_time_step_stage(c);
+  EXPECT_DOUBLE_EQ(h.dt_s, 0.5 * c.dt_s);
+  // nu = (tau - 1/2) dx^2 / (3 dt) of both phases unchanged: (tau - 1/2) halves with dt.
+  EXPECT_NEAR((h.collision.tau - 0.5) / h.dt_s, (c.collision.tau - 0.5) / c.dt_s, 1e-9 * (c.collision.tau - 0.5) / c.dt_s);
+  EXPECT_NEAR((h.inner_collision.tau - 0.5) / (h.collision.tau - 0.5), c.viscosity_ratio, 1e-12);
+  // Wi = gamma (tau - 1/2) dt: a quarter.
+  EXPECT_NEAR((h.collision.tau - 0.5) * h.dt_s / ((c.collision.tau - 0.5) * c.dt_s), 0.25, 1e-12);
+  // The same U_max in lattice units halves (lower Mach); samples at the same seconds, on membrane-step boundaries.
+  EXPECT_DOUBLE_EQ(h.lattice_velocity, 0.5 * c.lattice_velocity);
+  EXPECT_DOUBLE_EQ(static_cast<double>(h.sample_every_steps) * h.dt_s, static_cast<double>(c.sample_every_steps) * c.dt_s);
+  EXPECT_EQ(h.sample_every_steps % h.membrane_every, 0);
+  // Its start-up: three spin-ups (4 R^2 / nu = 2.5 ms each), not the 0.84 s membrane transient; then as long as stage 1.
+  EXPECT_NEAR(h.transient_s, 3.0 * 4.0 * c.radius_m * c.radius_m / c.kinematic_viscosity_m2_s, 1e-3 * h.transient_s);
+  EXPECT_NEAR(h.max_time_s - h.transient_s, c.max_time_s - c.transient_s, 1e-12);
+  EXPECT_FALSE(h.extrapolate_lattice_memory);
+  EXPECT_DOUBLE_EQ(h.membrane_mass_factor, c.membrane_mass_factor);   // the same physical inertia
+}
+
+TEST(TubeCellConfig, ExtrapolationToZeroWeissenbergIsExactForALine) {
+  // Q = 2 - 1300 Wi (the measured lift slope at ratio 5.85): the two stages give back Q(0) = 2 whatever the pair.
+  const auto q = [](double wi) { return 2.0 - 1300.0 * wi; };
+  EXPECT_NEAR(extrapolated_to_zero_weissenberg(q(1.75e-3), 1.75e-3, q(4.4e-4), 4.4e-4), 2.0, 1e-12);
+  EXPECT_NEAR(extrapolated_to_zero_weissenberg(q(1e-3), 1e-3, q(2.5e-4), 2.5e-4), 2.0, 1e-12);
+  // With a quarter of the Wi: Q0 = Q2 + (Q2 - Q1) / 3.
+  EXPECT_NEAR(extrapolated_to_zero_weissenberg(-4.0, 1.0, -2.0, 0.25), -2.0 + 2.0 / 3.0, 1e-12);
+}
+
 TEST(CellNumerics, WarnsWhenTheKernelReachesPastTheCellsHalfThickness) {
   // Reach = points / 2 x dx against the disc's half-thickness 1.3 um: the 4-point kernel at 1 um (2 um) and the
   // 3-point one (1.5 um) warn; the 2-point one at 1 um and the 4-point one at 0.5 um (both 1 um) do not.
