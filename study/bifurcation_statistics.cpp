@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/batch_means.hpp"
+#include "common/batch_means.hpp"
 #include "analysis/cut_profile.hpp"
 #include "analysis/histogram.hpp"
 #include "analysis/skewness_index.hpp"
@@ -57,7 +57,7 @@ nlohmann::json branch_block(const Layout& info, int b, const Columns& cols, cons
     for (std::size_t i = 0; i < bins; ++i) v[i] = r[at[i]];
     profile.push_back(hs::analysis::hematocrit_profile(v, fluid_m3));
   }
-  const auto per_bin = hs::analysis::batch_means(profile, kStudyBatches, start);
+  const auto per_bin = hs::common::batch_means(profile, kStudyBatches, start);
   std::vector<double> w;
   std::vector<double> mean;
   std::vector<double> se;
@@ -78,9 +78,9 @@ nlohmann::json branch_block(const Layout& info, int b, const Columns& cols, cons
     s_batches.push_back(hs::analysis::skewness_index(h));
   }
   nlohmann::json j{{"w", w}, {"hematocrit", mean}, {"hematocrit_se", se}, {"s_h", hs::analysis::skewness_index(mean)},
-                   {"s_h_se", hs::analysis::batch_means(s_batches, kStudyBatches).standard_error},
-                   {"s_h_batch_mean", hs::analysis::batch_means(s_batches, kStudyBatches).mean}};
-  const auto cut = hs::analysis::batch_means(cols.series(rows, name + "_cut_ht"), kStudyBatches, start);
+                   {"s_h_se", hs::common::batch_means(s_batches, kStudyBatches).standard_error},
+                   {"s_h_batch_mean", hs::common::batch_means(s_batches, kStudyBatches).mean}};
+  const auto cut = hs::common::batch_means(cols.series(rows, name + "_cut_ht"), kStudyBatches, start);
   j["cut_hematocrit"] = cut.mean;
   j["cut_hematocrit_se"] = cut.standard_error;
   if (!cols.has(name + "_fluid_flux_m3_s") || info.inlets.empty()) return j;   // no outlet named as the branch

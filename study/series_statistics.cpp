@@ -31,7 +31,7 @@ std::vector<double> Columns::series(const Rows& rows, const std::string& n) cons
 
 /// Batch-means ratio: per batch of rows [start, end) the ratio of summed numerators to summed denominators; the mean
 /// is the whole window's ratio, the error the batch ratios' spread over sqrt(batches).
-hs::analysis::MeanWithError batch_ratio(const Rows& rows, std::size_t start, const RowFn& num, const RowFn& den) {
+hs::common::MeanWithError batch_ratio(const Rows& rows, std::size_t start, const RowFn& num, const RowFn& den) {
   std::vector<double> n_all;
   std::vector<double> d_all;
   double n_sum = 0.0;
@@ -42,7 +42,7 @@ hs::analysis::MeanWithError batch_ratio(const Rows& rows, std::size_t start, con
     n_sum += n_all.back();
     d_sum += d_all.back();
   }
-  hs::analysis::MeanWithError out{.mean = d_sum != 0.0 ? n_sum / d_sum : 0.0, .standard_error = 0.0, .batches = 0};
+  hs::common::MeanWithError out{.mean = d_sum != 0.0 ? n_sum / d_sum : 0.0, .standard_error = 0.0, .batches = 0};
   const std::size_t len = n_all.size() / kStudyBatches;
   if (len == 0) return out;
   std::vector<double> ratios;
@@ -56,7 +56,7 @@ hs::analysis::MeanWithError batch_ratio(const Rows& rows, std::size_t start, con
     }
     ratios.push_back(db != 0.0 ? nb / db : 0.0);
   }
-  out.standard_error = hs::analysis::batch_means(ratios, kStudyBatches).standard_error;
+  out.standard_error = hs::common::batch_means(ratios, kStudyBatches).standard_error;
   out.batches = kStudyBatches;
   return out;
 }

@@ -11,12 +11,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/batch_means.hpp"
+#include "common/batch_means.hpp"
 #include "common/check_list.hpp"
 
 namespace hs::study {
 
-/// Batches per window for every standard error (batch means, analysis/batch_means.hpp).
+/// Batches per window for every standard error (batch means, common/batch_means.hpp).
 inline constexpr int kStudyBatches = 10;
 
 using Rows = std::vector<std::vector<double>>;
@@ -37,7 +37,7 @@ class Columns {
 
 /// Batch-means ratio: per batch of rows [start, end) the ratio of summed numerators to summed denominators; the mean
 /// is the whole window's ratio, the error the batch ratios' spread over sqrt(batches).
-[[nodiscard]] hs::analysis::MeanWithError batch_ratio(const Rows& rows, std::size_t start, const RowFn& num, const RowFn& den);
+[[nodiscard]] hs::common::MeanWithError batch_ratio(const Rows& rows, std::size_t start, const RowFn& num, const RowFn& den);
 
 /// Where every monitored series has settled (MSER-5, White 1997) and whether each is steady from the latest start on
 /// (halves within 3 standard errors or 1%): "all_found", "all_agree", "start_step", "start_time_s", "window_steps",

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/batch_means.hpp"
+#include "common/batch_means.hpp"
 
 namespace hs::study {
 namespace {
@@ -105,8 +105,8 @@ nlohmann::json stenosis_statistics(const nlohmann::json& layout, const std::vect
                                      [cells](const std::vector<double>& r) { return r[cells]; });
     std::vector<double> ht;
     for (const auto& r : rows) ht.push_back(r[cols.at(col(i, "rbc_m3"))] / l.fluid_m3[u]);
-    const auto ht_mean = hs::analysis::batch_means(ht, kStudyBatches, start);
-    const auto shear = hs::analysis::batch_means(cols.series(rows, col(i, "wall_shear_1_s")), kStudyBatches, start);
+    const auto ht_mean = hs::common::batch_means(ht, kStudyBatches, start);
+    const auto shear = hs::common::batch_means(cols.series(rows, col(i, "wall_shear_1_s")), kStudyBatches, start);
     const double r_w = l.radius_m[u];
     nlohmann::json b{{"x_m", l.x_m[u]}, {"wall_radius_m", r_w}, {"cell_samples", n}, {"di_mean", di_mean.mean},
                      {"di_mean_se", di_mean.standard_error}, {"di_sd", sd}, {"hematocrit", ht_mean.mean},

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/batch_means.hpp"
+#include "common/batch_means.hpp"
 
 namespace hs::analysis {
 
@@ -45,8 +45,8 @@ HalvesTest halves_agree(const std::vector<double>& x, std::size_t start, double 
   if (x.size() < start + 2 * static_cast<std::size_t>(batches)) return t;
   const std::size_t mid = start + (x.size() - start) / 2;
   const std::vector<double> first(x.begin() + static_cast<std::ptrdiff_t>(start), x.begin() + static_cast<std::ptrdiff_t>(mid));
-  const MeanWithError a = batch_means(first, batches);
-  const MeanWithError b = batch_means(x, batches, mid);
+  const hs::common::MeanWithError a = hs::common::batch_means(first, batches);
+  const hs::common::MeanWithError b = hs::common::batch_means(x, batches, mid);
   t.first_mean = a.mean;
   t.second_mean = b.mean;
   t.combined_error = std::hypot(a.standard_error, b.standard_error);

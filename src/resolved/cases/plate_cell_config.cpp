@@ -4,13 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
-#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
-#include "common/fluid_properties.hpp"
 #include "resolved/cases/cytoplasm_viscosity.hpp"
 #include "resolved/measure/flow_mode.hpp"
 
@@ -79,13 +76,7 @@ PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bo
   PlateCellConfig c;
   c.flow = flow;
   auto root = file.root();
-  auto geometry = root.section("geometry");
-  c.gap_m = geometry.positive("gap_m");
-  c.length_m = geometry.positive("length_m");
-  c.width_m = geometry.positive("width_m");
-  const common::FluidProperties fluid = common::parse_fluid(root.section("fluid"));
-  c.density_kg_m3 = fluid.density_kg_m3;
-  c.kinematic_viscosity_m2_s = fluid.kinematic_viscosity_m2_s;
+  const auto geometry = read_plate_box(root, c);
   auto cell = root.section_or_empty("cell");
   c.initial_height = cell.number_in_or("initial_height", 0.05, 0.95, 0.5);
   const std::string axis = cell.one_of_or("disc_axis", {"x", "y", "z"}, flow == PlateFlow::shear ? "y" : "z");
@@ -113,11 +104,7 @@ PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bo
   }
   if (quick) c.max_time_s = std::min(c.max_time_s, static_cast<double>(kQuickSamples * c.sample_every_steps) * dt);
   const double dx = c.numerics.dx_m;
-  const std::initializer_list<std::pair<const char*, double>> extents{
-      {"gap_m", c.gap_m}, {"length_m", c.length_m}, {"width_m", c.width_m}};
-  for (const auto& [key, value] : extents) {
-    if (value < 10.0 * dx) geometry.fail(key, fmt::format("must span at least 10 dx_m = {:g} m", 10.0 * dx));
-  }
+  check_plate_box_span(geometry, c, dx);
   // The rim (radius a) must clear the walls by the IBM stencil, whatever the orientation.
   const double clearance = std::min(c.initial_height, 1.0 - c.initial_height) * c.gap_m - kCellRadius_m;
   if (clearance < kWallClearanceDx * dx) {

@@ -7,6 +7,7 @@
 
 #include "common/config/config_file.hpp"
 #include "resolved/cases/cell_numerics.hpp"
+#include "resolved/cases/plate_box.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
 
 namespace hs::resolved {
@@ -14,15 +15,9 @@ namespace hs::resolved {
 enum class PlateFlow { shear, poiseuille };
 
 /// Coordinates: flow along x, walls at y = 0 and y = H, periodic in x and z (z is the vorticity direction).
-struct PlateCellConfig {
+/// [geometry] and [fluid]: the PlateBox.
+struct PlateCellConfig : PlateBox {
   PlateFlow flow = PlateFlow::shear;
-  // [geometry]
-  double gap_m = 0.0;               // H
-  double length_m = 0.0;            // periodic box along x
-  double width_m = 0.0;             // periodic box along z
-  // [fluid]
-  double density_kg_m3 = 0.0;
-  double kinematic_viscosity_m2_s = 0.0;
   // [flow] (shear: shear_rate_1_s or capillary; migration: reynolds = rho H U_max / mu, Shi et al. 2014)
   double shear_rate_1_s = 0.0;      // shear: the imposed rate; migration: the wall shear rate 4 U_max / H
   double u_max_m_s = 0.0;           // migration: centreline velocity; shear: wall speed U/2

@@ -4,12 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
-#include <utility>
 
-#include <fmt/format.h>
-
-#include "common/fluid_properties.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 
 namespace hs::resolved {
@@ -42,13 +37,7 @@ void read_cells(hs::common::ConfigSection k, ShearSuspensionConfig& c) {
 ShearSuspensionConfig read_shear_suspension(hs::common::ConfigFile& file, bool quick) {
   ShearSuspensionConfig c;
   auto root = file.root();
-  auto geometry = root.section("geometry");
-  c.gap_m = geometry.positive("gap_m");
-  c.length_m = geometry.positive("length_m");
-  c.width_m = geometry.positive("width_m");
-  const common::FluidProperties fluid = common::parse_fluid(root.section("fluid"));
-  c.density_kg_m3 = fluid.density_kg_m3;
-  c.kinematic_viscosity_m2_s = fluid.kinematic_viscosity_m2_s;
+  const auto geometry = read_plate_box(root, c);
   auto cells = root.section("cells");
   read_cells(cells, c);
   auto membrane = root.section_or_empty("membrane");
@@ -68,11 +57,7 @@ ShearSuspensionConfig read_shear_suspension(hs::common::ConfigFile& file, bool q
   c.sample_every_steps = std::max(k, k * std::lround(c.sample_every_s / (dt * static_cast<double>(k))));
   c.sample_every_s = static_cast<double>(c.sample_every_steps) * dt;
   if (quick) c.max_time_s = std::min(c.max_time_s, static_cast<double>(kQuickSamples * c.sample_every_steps) * dt);
-  const double dx = c.numerics.dx_m;
-  for (const auto& [key, value] : std::initializer_list<std::pair<const char*, double>>{
-           {"gap_m", c.gap_m}, {"length_m", c.length_m}, {"width_m", c.width_m}}) {
-    if (value < 10.0 * dx) geometry.fail(key, fmt::format("must span at least 10 dx_m = {:g} m", 10.0 * dx));
-  }
+  check_plate_box_span(geometry, c, c.numerics.dx_m);
   c.contact.period_m = {c.length_m, 0.0, c.width_m};
   return c;
 }

@@ -7,6 +7,7 @@
 
 #include "common/config/config_file.hpp"
 #include "resolved/cases/cell_numerics.hpp"
+#include "resolved/cases/plate_box.hpp"
 #include "resolved/membrane/cell_contact.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
 
@@ -27,9 +28,8 @@ inline constexpr double kPlacementGap_m = 0.5e-6;
 enum class CellShapeKind { biconcave, sphere };
 
 /// Flow along x, walls at y = 0 (moving at -U/2) and y = H (+U/2), periodic in x and z.
-struct ShearSuspensionConfig {
-  double gap_m = 0.0, length_m = 0.0, width_m = 0.0;   // [geometry]
-  double density_kg_m3 = 0.0, kinematic_viscosity_m2_s = 0.0;   // [fluid]
+/// [geometry] and [fluid]: the PlateBox.
+struct ShearSuspensionConfig : PlateBox {
   double shear_rate_1_s = 0.0;      // [flow] shear_rate_1_s, or capillary Ca = mu gamma a / k_s
   double reynolds = 0.0;            // rho gamma H^2 / mu
   // [cells]

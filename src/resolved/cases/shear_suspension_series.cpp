@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/batch_means.hpp"
 #include "common/dimensionless_groups.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 
@@ -14,35 +15,16 @@ namespace {
 
 /// Share of the run treated as start-up before eta_r is averaged (as the shear case's means).
 constexpr double kTransientFraction = 0.5;
-/// Batches of the batch-means error: 10 when there are samples enough (>= 2 a batch), fewer otherwise.
+/// Batches of the batch-means error (common/batch_means): 10, fewer when the window holds fewer samples.
 constexpr int kBatches = 10;
 
-}  // namespace
-
-BatchMean batch_mean(std::span<const double> x, int batches) {
-  BatchMean out;
-  if (x.empty()) return out;
-  double sum = 0.0;
-  for (const double v : x) sum += v;
-  out.mean = sum / static_cast<double>(x.size());
-  const std::size_t b = std::min<std::size_t>(static_cast<std::size_t>(std::max(batches, 0)), x.size());
-  if (b < 2) return out;
-  const std::size_t per = x.size() / b;   // the last x.size() % b samples enter the mean only
-  std::vector<double> means(b, 0.0);
-  for (std::size_t i = 0; i < b; ++i) {
-    for (std::size_t k = 0; k < per; ++k) means[i] += x[i * per + k];
-    means[i] /= static_cast<double>(per);
-  }
-  double m = 0.0;
-  for (const double v : means) m += v;
-  m /= static_cast<double>(b);
-  double var = 0.0;
-  for (const double v : means) var += (v - m) * (v - m);
-  var /= static_cast<double>(b - 1);
-  out.standard_error = std::sqrt(var / static_cast<double>(b));
-  out.batches = static_cast<int>(b);
-  return out;
+/// eta_r over the settled window by batch means; a window of one sample has no error estimate (SE 0, 0 batches).
+common::MeanWithError settled_mean(const std::vector<double>& eta) {
+  if (eta.size() < 2) return {.mean = eta.empty() ? 0.0 : eta.front(), .standard_error = 0.0, .batches = 0};
+  return common::batch_means(eta, std::min(kBatches, static_cast<int>(eta.size())));
 }
+
+}  // namespace
 
 std::vector<std::string> ShearSuspensionSeries::columns() {
   return {"time_s", "stresslet_xy_sum_N_m", "relative_viscosity", "di_mean", "min_cell_distance_m", "contact_pairs",
@@ -83,11 +65,14 @@ nlohmann::json ShearSuspensionSeries::results() const {
     volume += samples_[i].volume_m3;
     di += samples_[i].di_mean;
   }
-  const BatchMean m = batch_mean(eta, kBatches);
+  const common::MeanWithError m = settled_mean(eta);
   r["relative_viscosity"] = m.mean;
   r["relative_viscosity_standard_error"] = m.standard_error;
   r["relative_viscosity_batches"] = m.batches;
-  r["settled_window_s"] = {samples_[from].time_s, samples_.back().time_s};
+  // The batches drop the window's remainder (< 10 samples) at its front, the less settled end: the mean's window.
+  const auto batches = static_cast<std::size_t>(std::max(m.batches, 1));
+  const std::size_t used = eta.size() / batches * batches;
+  r["settled_window_s"] = {samples_[samples_.size() - used].time_s, samples_.back().time_s};
   const double n = static_cast<double>(eta.size());
   // Per cell, the dilute-limit reading: [eta] = (eta_r - 1) / phi with the cells' mean volume (Batchelor 1970).
   const double phi = volume / n / box_m3;

@@ -3,7 +3,6 @@
 // cells' summed stresslets, with its standard error, and the cells' closest approach.
 #pragma once
 
-#include <span>
 #include <string>
 #include <vector>
 
@@ -22,15 +21,6 @@ struct SuspensionSample {
   double min_wall_distance_m = 0.0;  // closest vertex to a plate
   double volume_m3 = 0.0;            // sum of the cells' enclosed volumes
 };
-
-/// Mean of a series and its standard error from `batches` consecutive batch means (the samples are correlated; the
-/// batch means much less so): SE = sd(batch means) / sqrt(batches). batches < 2 or too few samples: SE 0.
-struct BatchMean {
-  double mean = 0.0;
-  double standard_error = 0.0;
-  int batches = 0;
-};
-[[nodiscard]] BatchMean batch_mean(std::span<const double> x, int batches);
 
 class ShearSuspensionSeries {
  public:

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace hs::analysis {
+namespace hs::common {
 
 struct MeanWithError {
   double mean = 0.0;
@@ -22,4 +22,4 @@ struct MeanWithError {
 [[nodiscard]] std::vector<MeanWithError> batch_means(const std::vector<std::vector<double>>& x, int batches,
                                                      std::size_t first = 0);
 
-}  // namespace hs::analysis
+}  // namespace hs::common

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Batch means.
-#include "analysis/batch_means.hpp"
+#include "common/batch_means.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace hs::analysis {
+namespace hs::common {
 
 MeanWithError batch_means(const std::vector<double>& x, int batches, std::size_t first) {
   if (batches < 2) throw std::invalid_argument("batch_means: needs at least 2 batches");
@@ -39,4 +39,4 @@ std::vector<MeanWithError> batch_means(const std::vector<std::vector<double>>& x
   return out;
 }
 
-}  // namespace hs::analysis
+}  // namespace hs::common
