@@ -24,9 +24,9 @@ constexpr double kStepChange = 1.2;
 /// First growth step in scale, and its cap (a step that large is tried only while the cells are far apart).
 constexpr double kFirstGrowth = 0.01;
 constexpr double kMaxGrowth = 0.05;
-/// Jammed: the scale grew by less than this over the window of sweeps.
-constexpr double kStallGain = 1.0e-3;
-constexpr long kStallWindow = 300;
+/// Jammed: at the size's growth rate over the last window of sweeps (it only slows as the cells crowd), full size
+/// would not be reached within the sweeps left.
+constexpr long kRateWindow = 200;
 /// A stream of its own, so that the packing does not depend on how many tries the full-size addition spent.
 constexpr std::uint64_t kPackingStream = 0x7061636bULL;
 
@@ -53,9 +53,9 @@ PackingResult grow_packing(const CellGeometry& g, long n, std::uint64_t seed, in
   out.start_scale = scale;
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<std::vector<Vec3>> x(static_cast<std::size_t>(n));
-  VertexBins bins(box, g.gap_m());
+  VertexBins bins(box, g.gap_m()), scratch(box, g.gap_m());
   const auto rebuild = [&] {
-    bins = VertexBins(box, g.gap_m());
+    bins.clear();
     for (long i = 0; i < n; ++i) {
       (void)g.vertices_within_walls(out.poses[i], scale, x[i]);
       bins.add(static_cast<int>(i), x[i]);
@@ -91,7 +91,7 @@ PackingResult grow_packing(const CellGeometry& g, long n, std::uint64_t seed, in
     if (acceptance > kAcceptHigh) step = std::min(step * kStepChange, scale * g.radius_m());
     if (acceptance < kAcceptLow) step /= kStepChange;
     const double bigger = std::min(1.0, scale + growth);
-    if (all_clear(g, out.poses, bigger)) {
+    if (all_clear(g, out.poses, bigger, scratch)) {
       scale = bigger;
       growth = std::min(2.0 * growth, kMaxGrowth);
       rebuild();
@@ -100,7 +100,10 @@ PackingResult grow_packing(const CellGeometry& g, long n, std::uint64_t seed, in
     }
     history.push_back(scale);
     if (scale == 1.0) break;
-    if (out.sweeps > kStallWindow && scale - history[history.size() - 1 - kStallWindow] < kStallGain) break;
+    if (out.sweeps > kRateWindow) {
+      const double rate = (scale - history[history.size() - 1 - kRateWindow]) / kRateWindow;
+      if (rate <= 0.0 || static_cast<double>(out.sweeps) + (1.0 - scale) / rate > static_cast<double>(max_sweeps)) break;
+    }
   }
   out.scale = scale;
   return out;

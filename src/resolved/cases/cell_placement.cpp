@@ -2,6 +2,7 @@
 // Cells at a target hematocrit: random sequential addition when it suffices, growth packing when it does not.
 #include "resolved/cases/cell_placement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -37,6 +38,16 @@ Placement place_cells(const TriangleMesh& rest, const PlacementBox& box, const P
                                           out.box_volume_m3 * 1e18, out.cell_volume_m3 * 1e18,
                                           out.cell_volume_m3 / out.box_volume_m3));
   }
+  double room_m3 = 1.0;   // where the vertices may lie: the cells' insides too, as each spans its vertices
+  for (int a = 0; a < 3; ++a) {
+    room_m3 *= std::max(0.0, box.upper_m[a] - box.lower_m[a] - (box.periodic[a] ? 0.0 : 2.0 * spec.wall_clearance_m));
+  }
+  if (static_cast<double>(n) * out.cell_volume_m3 > room_m3) {
+    throw PlacementImpossible(fmt::format("{} cells of {:.4g} um^3 (hematocrit {:g}) exceed the {:.4g} um^3 of the box "
+                                          "that keeps {:g} m from the walls; lower the hematocrit or enlarge the box",
+                                          n, out.cell_volume_m3 * 1e18, spec.hematocrit, room_m3 * 1e18,
+                                          spec.wall_clearance_m));
+  }
   const placement::CellGeometry g(rest, box, spec.min_gap_m, spec.wall_clearance_m);
   const auto phi = [&](double cells) { return cells * out.cell_volume_m3 / out.box_volume_m3; };
   std::mt19937_64 rng(spec.seed);
@@ -60,8 +71,9 @@ Placement place_cells(const TriangleMesh& rest, const PlacementBox& box, const P
         packed.start_scale == 0.0
             ? fmt::format("growth packing found no start even at {:g} of the cells' size", 0.2)
             : fmt::format("growth packing grew the {} cells from {:.3f} to {:.4f} of their size in {} sweeps (the "
-                          "hematocrit of cells that size: {:.4g}) and jammed", n, packed.start_scale, packed.scale,
-                          packed.sweeps, phi(static_cast<double>(n)) * std::pow(packed.scale, 3));
+                          "hematocrit of cells that size: {:.4g}) and stopped: at its rate of growth full size would "
+                          "take more than {} sweeps", n, packed.start_scale, packed.scale, packed.sweeps,
+                          phi(static_cast<double>(n)) * std::pow(packed.scale, 3), spec.max_packing_sweeps);
     throw PlacementImpossible(fmt::format("{}; {} (gap {:g} m, wall clearance {:g} m); lower the hematocrit or enlarge "
                                           "the box", addition, growth, spec.min_gap_m, spec.wall_clearance_m));
   }

@@ -27,7 +27,7 @@ struct PlacementSpec {
   double wall_clearance_m = 0.0;  // smallest distance of a vertex from a non-periodic face
   std::uint64_t seed = 1;
   int attempts_per_cell = 20000;  // random tries for one cell before random sequential addition gives up
-  long max_packing_sweeps = 20000;  // Monte Carlo sweeps of the growth packing at most (it stops earlier when jammed)
+  long max_packing_sweeps = 10000;  // Monte Carlo sweeps of the growth packing at most (it stops earlier when jammed)
 };
 
 enum class PlacementMethod { random_sequential_addition, growth_packing };
@@ -61,7 +61,8 @@ class PlacementImpossible : public std::runtime_error {
 /// (a rim through a dimple). When a cell finds no place in attempts_per_cell tries, the growth packing
 /// (cell_packing.hpp) places all N shrunken and grows them back to full size under the same tests. Either way the
 /// cells end rigid copies of `rest` at full size. Deterministic for a seed (std::mt19937_64). Throws
-/// PlacementImpossible saying what both reached, and when the target is below half a cell in the box.
+/// PlacementImpossible saying what both reached, when the target is below half a cell in the box, and at once when
+/// the N cells' volume exceeds the box's less the wall clearances.
 [[nodiscard]] Placement place_cells(const TriangleMesh& rest, const PlacementBox& box, const PlacementSpec& spec);
 
 /// Smallest distance between vertices of different cells (minimum image along periodic axes), O(N^2) (tests, reports).

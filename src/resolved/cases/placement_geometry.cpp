@@ -154,7 +154,7 @@ Vec3 CellGeometry::wrapped(Vec3 c) const {
   return c;
 }
 
-VertexBins::VertexBins(const PlacementBox& box, double gap_m) : box_(box), gap_m_(gap_m) {
+VertexBins::VertexBins(const PlacementBox& box, double gap_m) : box_(box), gap2_(gap_m * gap_m) {
   double size = gap_m;
   for (;;) {
     double total = 1.0;
@@ -168,6 +168,7 @@ VertexBins::VertexBins(const PlacementBox& box, double gap_m) : box_(box), gap_m
     size *= 2.0;
   }
   bins_.resize(static_cast<std::size_t>(count_[0]) * count_[1] * count_[2]);
+  listed_.assign(bins_.size(), 0);
 }
 
 int VertexBins::bin_along(int axis, double coordinate) const {
@@ -176,45 +177,88 @@ int VertexBins::bin_along(int axis, double coordinate) const {
   return std::clamp(i, 0, count_[axis] - 1);   // a wall's bins also hold what lies beyond it
 }
 
+Vec3 VertexBins::wrapped(Vec3 p) const {
+  for (int a = 0; a < 3; ++a) {
+    if (!box_.periodic[a]) continue;
+    const double l = box_.upper_m[a] - box_.lower_m[a];
+    p[a] -= l * std::floor((p[a] - box_.lower_m[a]) / l);
+    if (p[a] >= box_.upper_m[a]) p[a] = box_.lower_m[a];   // rounded up onto the face: the same point one period back
+  }
+  return p;
+}
+
 void VertexBins::add(int cell, const std::vector<Vec3>& x) {
-  for (const Vec3& p : x) bins_[flat(bin_along(0, p.x), bin_along(1, p.y), bin_along(2, p.z))].push_back({p, cell});
+  for (const Vec3& v : x) {
+    const Vec3 p = wrapped(v);
+    const std::size_t b = flat(bin_along(0, p.x), bin_along(1, p.y), bin_along(2, p.z));
+    if (listed_[b] == 0) {
+      listed_[b] = 1;
+      filled_.push_back(b);
+    }
+    bins_[b].push_back({p, cell});
+  }
 }
 
 void VertexBins::remove(int cell, const std::vector<Vec3>& x) {
-  for (const Vec3& p : x) {
+  for (const Vec3& v : x) {
+    const Vec3 p = wrapped(v);
     std::erase_if(bins_[flat(bin_along(0, p.x), bin_along(1, p.y), bin_along(2, p.z))],
                   [cell](const Entry& e) { return e.cell == cell; });
   }
 }
 
-bool VertexBins::any_within(const Vec3& p, int self) const {
-  // The distinct bins next to p's along each axis (a period of one or two bins has fewer than three).
+void VertexBins::clear() {
+  for (const std::size_t b : filled_) {
+    bins_[b].clear();
+    listed_[b] = 0;
+  }
+  filled_.clear();
+}
+
+bool VertexBins::any_within(const Vec3& v, int self) const {
+  // The distinct bins next to p's along each axis, with the shift that brings a stored vertex next to p across a
+  // periodic face (a period of fewer than three bins: the nearest image per vertex instead).
+  const Vec3 p = wrapped(v);
   std::array<std::array<int, 3>, 3> near{};
+  std::array<std::array<double, 3>, 3> shift{};
   std::array<int, 3> n{};
+  std::array<bool, 3> nearest_image{};
   for (int a = 0; a < 3; ++a) {
     const int c = bin_along(a, p[a]);
+    const double l = box_.upper_m[a] - box_.lower_m[a];
+    nearest_image[a] = box_.periodic[a] && count_[a] < 3;
     for (int o = -1; o <= 1; ++o) {
       int i = c + o;
+      double s = 0.0;
       if (box_.periodic[a]) {
-        i = ((i % count_[a]) + count_[a]) % count_[a];
+        if (i < 0) {
+          i += count_[a];
+          s = -l;
+        } else if (i >= count_[a]) {
+          i -= count_[a];
+          s = l;
+        }
       } else if (i < 0 || i >= count_[a]) {
         continue;
       }
-      if (std::find(near[a].begin(), near[a].begin() + n[a], i) == near[a].begin() + n[a]) near[a][n[a]++] = i;
+      if (std::find(near[a].begin(), near[a].begin() + n[a], i) != near[a].begin() + n[a]) continue;
+      near[a][n[a]] = i;
+      shift[a][n[a]++] = nearest_image[a] ? 0.0 : s;
     }
   }
   for (int i = 0; i < n[0]; ++i) {
     for (int j = 0; j < n[1]; ++j) {
       for (int k = 0; k < n[2]; ++k) {
+        const Vec3 offset{shift[0][i] - p.x, shift[1][j] - p.y, shift[2][k] - p.z};
         for (const Entry& e : bins_[flat(near[0][i], near[1][j], near[2][k])]) {
           if (e.cell == self) continue;
-          Vec3 d = e.p - p;
+          Vec3 d = e.p + offset;
           for (int a = 0; a < 3; ++a) {
-            if (!box_.periodic[a]) continue;
+            if (!nearest_image[a]) continue;
             const double l = box_.upper_m[a] - box_.lower_m[a];
             d[a] -= l * std::round(d[a] / l);
           }
-          if (common::norm(d) < gap_m_) return true;
+          if (common::dot(d, d) < gap2_) return true;
         }
       }
     }
@@ -222,12 +266,12 @@ bool VertexBins::any_within(const Vec3& p, int self) const {
   return false;
 }
 
-bool all_clear(const CellGeometry& g, const std::vector<Pose>& poses, double scale) {
+bool all_clear(const CellGeometry& g, const std::vector<Pose>& poses, double scale, VertexBins& bins) {
   std::vector<std::vector<Vec3>> x(poses.size());
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (!g.vertices_within_walls(poses[i], scale, x[i])) return false;
   }
-  VertexBins bins(g.box(), g.gap_m());
+  bins.clear();
   for (std::size_t i = 0; i < poses.size(); ++i) {
     for (const Vec3& p : x[i]) {
       if (bins.any_within(p, static_cast<int>(i))) return false;   // against the cells before i

@@ -80,27 +80,33 @@ class VertexBins {
   VertexBins(const PlacementBox& box, double gap_m);
   void add(int cell, const std::vector<common::Vec3>& x);
   void remove(int cell, const std::vector<common::Vec3>& x);
+  /// Empties every bin (keeping their storage).
+  void clear();
   /// Whether a stored vertex of a cell other than `self` lies within the gap of p (minimum image).
   [[nodiscard]] bool any_within(const common::Vec3& p, int self) const;
 
  private:
   struct Entry {
-    common::Vec3 p;
+    common::Vec3 p;   // moved into the box along the periodic axes
     int cell;
   };
   [[nodiscard]] int bin_along(int axis, double coordinate) const;
+  [[nodiscard]] common::Vec3 wrapped(common::Vec3 p) const;
   [[nodiscard]] std::size_t flat(int i, int j, int k) const {
     return (static_cast<std::size_t>(i) * count_[1] + j) * count_[2] + k;
   }
   PlacementBox box_;
-  double gap_m_;
+  double gap2_;   // the gap squared
   std::array<int, 3> count_{};
   std::array<double, 3> size_{};
   std::vector<std::vector<Entry>> bins_;
+  std::vector<std::size_t> filled_;   // bins that received a vertex since the last clear()
+  std::vector<char> listed_;          // whether a bin is in filled_
 };
 
-/// Whether the cells at `poses`, all at `scale`, keep the walls' clearance, the gap and each other's insides.
-[[nodiscard]] bool all_clear(const CellGeometry& g, const std::vector<Pose>& poses, double scale);
+/// Whether the cells at `poses`, all at `scale`, keep the walls' clearance, the gap and each other's insides
+/// (`scratch`: bins for the geometry's box and gap, emptied first).
+[[nodiscard]] bool all_clear(const CellGeometry& g, const std::vector<Pose>& poses, double scale, VertexBins& scratch);
 
 /// Random sequential addition of n cells at `scale`: uniformly random rotations and centres, each accepted when clear
 /// of the walls and of the cells before it. Returns the poses placed (fewer than n when one found no place in

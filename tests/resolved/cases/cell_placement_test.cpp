@@ -159,14 +159,28 @@ TEST(CellPlacement, SameSeedSamePacking) {
 
 TEST(CellPlacement, RefusesWhatTheBoxCannotHold) {
   const hr::TriangleMesh rbc = hr::make_rbc_mesh({});
-  // 0.6 of the box in randomly placed discs 0.5 um apart: beyond random sequential addition's jamming.
+  // 0.6 of the box in discs 0.5 um apart: beyond random sequential addition, and the growth packing stalls near
+  // 0.35 in this box (measured; a budget of 300 sweeps keeps the test short, the message is the same).
   const hr::PlacementSpec full{.hematocrit = 0.6, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 1,
-                               .attempts_per_cell = 300};
+                               .attempts_per_cell = 300, .max_packing_sweeps = 300};
   try {
     (void)hr::place_cells(rbc, kBox, full);
     FAIL() << "placement at phi 0.6 should be impossible";
   } catch (const hr::PlacementImpossible& e) {
-    EXPECT_NE(std::string(e.what()).find("lower the hematocrit or enlarge the box"), std::string::npos) << e.what();
+    const std::string what = e.what();
+    for (const char* part : {"random sequential addition placed", "growth packing grew the 60 cells from",
+                             "and stopped: at its rate of growth", "lower the hematocrit or enlarge the box"}) {
+      EXPECT_NE(what.find(part), std::string::npos) << part << " not in: " << what;
+    }
+  }
+  // More cell volume than the room between the wall clearances: refused before any try (6 um plates, 2 um clearance).
+  const hr::PlacementBox slab{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {24e-6, 6e-6, 16e-6}, .periodic = {true, false, true}};
+  try {
+    (void)hr::place_cells(rbc, slab, {.hematocrit = 0.5, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 1});
+    FAIL() << "placement at phi 0.5 in a 2 um slab should be impossible";
+  } catch (const hr::PlacementImpossible& e) {
+    EXPECT_NE(std::string(e.what()).find("exceed the 768 um^3 of the box that keeps 2e-06 m from the walls"),
+              std::string::npos) << e.what();
   }
   // A target below half a cell.
   const hr::PlacementSpec empty{.hematocrit = 1e-4, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 1};
