@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 
 #include "resolved/cases/cell_placement.hpp"
 #include "resolved/membrane/rbc_mesh_generator.hpp"
@@ -34,9 +35,11 @@ double winding_number(const std::vector<Vec3>& x, const std::vector<std::array<i
 // The shear-suspension box: 24 x 24 x 16 um, periodic in x and z, plates at y = 0 and 24 um.
 const hr::PlacementBox kBox{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {24e-6, 24e-6, 16e-6}, .periodic = {true, false, true}};
 
-Vec3 minimum_image(Vec3 d) {
-  d.x -= 24e-6 * std::round(d.x / 24e-6);
-  d.z -= 16e-6 * std::round(d.z / 16e-6);
+Vec3 minimum_image(Vec3 d, const hr::PlacementBox& box) {
+  for (int a = 0; a < 3; ++a) {
+    const double l = box.upper_m[a] - box.lower_m[a];
+    if (box.periodic[a]) d[a] -= l * std::round(d[a] / l);
+  }
   return d;
 }
 
@@ -44,8 +47,9 @@ Vec3 minimum_image(Vec3 d) {
 /// different cells keep the gap, and no vertex lies inside another cell (winding number, for the vertices within the
 /// other cell's bounding sphere, nearest periodic image). Each cell is the rest mesh turned and moved: its edge
 /// lengths are the rest mesh's (full size, undeformed).
-void expect_clear(const hr::TriangleMesh& rest, const hr::Placement& p, const hr::PlacementSpec& spec) {
-  EXPECT_GE(hr::min_intercell_distance_m(p.cells_m, kBox), spec.min_gap_m);
+void expect_clear(const hr::TriangleMesh& rest, const hr::Placement& p, const hr::PlacementSpec& spec,
+                  const hr::PlacementBox& box = kBox) {
+  EXPECT_GE(hr::min_intercell_distance_m(p.cells_m, box), spec.min_gap_m);
   long near = 0;
   for (std::size_t a = 0; a < p.cells_m.size(); ++a) {
     const auto& xa = p.cells_m[a];
@@ -60,13 +64,16 @@ void expect_clear(const hr::TriangleMesh& rest, const hr::Placement& p, const hr
     double radius = 0.0;
     for (const auto& v : xa) {
       radius = std::max(radius, hs::common::norm(v - centre));
-      ASSERT_GE(v.y, spec.wall_clearance_m);
-      ASSERT_LE(v.y, 24e-6 - spec.wall_clearance_m);
+      for (int k = 0; k < 3; ++k) {
+        if (box.periodic[k]) continue;
+        ASSERT_GE(v[k], box.lower_m[k] + spec.wall_clearance_m);
+        ASSERT_LE(v[k], box.upper_m[k] - spec.wall_clearance_m);
+      }
     }
     for (std::size_t b = 0; b < p.cells_m.size(); ++b) {
       if (a == b) continue;
       for (const auto& v : p.cells_m[b]) {
-        const Vec3 d = minimum_image(v - centre);
+        const Vec3 d = minimum_image(v - centre, box);
         if (hs::common::norm(d) > radius) continue;
         ++near;
         ASSERT_LT(winding_number(xa, rest.triangles, centre + d), 0.5) << "a vertex of cell " << b << " lies inside cell " << a;
@@ -139,6 +146,21 @@ TEST(CellPlacement, PacksAQuarterOfTheShearBoxWithoutOverlaps) {
     std::printf("[packing] seed %llu: %zu cells, hematocrit %.4f, start size %.3f, %ld sweeps, %.2f s\n",
                 static_cast<unsigned long long>(seed), p.cells_m.size(), p.hematocrit, p.packing_start_scale,
                 p.packing_sweeps, wall_s);
+  }
+}
+
+TEST(CellPlacement, PacksOtherBoxes) {
+  // Any box: periodic along all three axes (13 cells at phi 0.3 in 16 um cubed), and walled on all six faces (a 20 um
+  // cube with 1 um clearance, 17 cells at phi 0.2; random sequential addition stops at 10 cells, 0.115).
+  const hr::TriangleMesh rbc = hr::make_rbc_mesh({});
+  const hr::PlacementBox periodic{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {16e-6, 16e-6, 16e-6}, .periodic = {true, true, true}};
+  const hr::PlacementBox walled{.lower_m = {-10e-6, -10e-6, -10e-6}, .upper_m = {10e-6, 10e-6, 10e-6}, .periodic = {}};
+  for (const auto& [box, phi, clearance] : {std::tuple{periodic, 0.3, 0.0}, std::tuple{walled, 0.2, 1e-6}}) {
+    const hr::PlacementSpec spec{.hematocrit = phi, .min_gap_m = 0.5e-6, .wall_clearance_m = clearance, .seed = 4};
+    const hr::Placement p = hr::place_cells(rbc, box, spec);
+    expect_clear(rbc, p, spec, box);
+    std::printf("[packing] %zu cells, hematocrit %.4f, %s, %ld sweeps\n", p.cells_m.size(), p.hematocrit,
+                hr::placement_method_name(p.method), p.packing_sweeps);
   }
 }
 
