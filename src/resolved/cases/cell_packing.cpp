@@ -21,9 +21,11 @@ constexpr double kSmallestStart = 0.2;
 constexpr double kAcceptLow = 0.3;
 constexpr double kAcceptHigh = 0.5;
 constexpr double kStepChange = 1.2;
-/// First growth step in scale, and its cap (a step that large is tried only while the cells are far apart).
+/// First growth step in scale, its cap (a step that large is tried only while the cells are far apart) and its floor
+/// (so that a run of failed tries does not leave a step that takes as many successes to grow back).
 constexpr double kFirstGrowth = 0.01;
 constexpr double kMaxGrowth = 0.05;
+constexpr double kMinGrowth = 1.0e-5;
 /// Jammed: at the size's growth rate over the last window of sweeps (it only slows as the cells crowd), full size
 /// would not be reached within the sweeps left.
 constexpr long kRateWindow = 200;
@@ -96,7 +98,7 @@ PackingResult grow_packing(const CellGeometry& g, long n, std::uint64_t seed, in
       growth = std::min(2.0 * growth, kMaxGrowth);
       rebuild();
     } else {
-      growth *= 0.5;
+      growth = std::max(0.5 * growth, kMinGrowth);
     }
     history.push_back(scale);
     if (scale == 1.0) break;
