@@ -104,7 +104,8 @@ PackingResult grow_packing(const CellGeometry& g, long n, std::uint64_t seed, in
     if (scale == 1.0) break;
     if (out.sweeps > kRateWindow) {
       const double rate = (scale - history[history.size() - 1 - kRateWindow]) / kRateWindow;
-      if (rate <= 0.0 || static_cast<double>(out.sweeps) + (1.0 - scale) / rate > static_cast<double>(max_sweeps)) break;
+      const double sweeps_needed = (1.0 - scale) / rate;
+      if (rate <= 0.0 || static_cast<double>(out.sweeps) + sweeps_needed > static_cast<double>(max_sweeps)) break;
     }
   }
   out.scale = scale;

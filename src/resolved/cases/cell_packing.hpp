@@ -23,8 +23,9 @@ struct PackingResult {
 /// box, shrinking by 10 % until they fit), then grown back: each sweep tries one random translation and rotation per
 /// cell (accepted when the cell stays clear of the walls, the gap and the other cells' insides, at the current size;
 /// step sizes adapted to 30-50 % acceptance), then tries a larger size for all cells at once (accepted when every
-/// test holds at it; the step doubles on success and halves on failure). Stops at full size, or as jammed when the
-/// growth rate over the last 200 sweeps would not reach full size within `max_sweeps`. Deterministic for a seed (std::mt19937_64).
+/// test holds at it; the step doubles on success up to 0.05 and halves on failure down to 1e-5). Stops at full
+/// size, or as jammed when the growth rate over the last 200 sweeps would not reach full size within `max_sweeps`.
+/// Deterministic for a seed (std::mt19937_64).
 [[nodiscard]] PackingResult grow_packing(const CellGeometry& g, long n, std::uint64_t seed, int attempts_per_cell,
                                          long max_sweeps);
 

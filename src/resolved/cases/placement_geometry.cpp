@@ -18,7 +18,9 @@ constexpr int kInsideVoxels = 50;
 /// Most bins of the vertex grid (~100 MB of empty vectors at most): a large box with a small gap gets larger bins.
 constexpr double kMaxBins = 4.0e6;
 
-Vec3 rotate(const Rotation& r, const Vec3& v) { return {common::dot(r[0], v), common::dot(r[1], v), common::dot(r[2], v)}; }
+Vec3 rotate(const Rotation& r, const Vec3& v) {
+  return {common::dot(r[0], v), common::dot(r[1], v), common::dot(r[2], v)};
+}
 Vec3 rotate_back(const Rotation& r, const Vec3& v) { return v.x * r[0] + v.y * r[1] + v.z * r[2]; }
 
 }  // namespace
@@ -94,7 +96,9 @@ bool InsideMap::inside(const Vec3& p) const {
   return inside_[index(ijk[0], ijk[1], ijk[2])] != 0;
 }
 
-std::size_t InsideMap::index(int i, int j, int k) const { return (static_cast<std::size_t>(i) * n_[1] + j) * n_[2] + k; }
+std::size_t InsideMap::index(int i, int j, int k) const {
+  return (static_cast<std::size_t>(i) * n_[1] + j) * n_[2] + k;
+}
 
 namespace {
 std::vector<Vec3> body_of(const TriangleMesh& rest) {

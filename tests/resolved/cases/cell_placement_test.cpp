@@ -76,7 +76,8 @@ void expect_clear(const hr::TriangleMesh& rest, const hr::Placement& p, const hr
         const Vec3 d = minimum_image(v - centre, box);
         if (hs::common::norm(d) > radius) continue;
         ++near;
-        ASSERT_LT(winding_number(xa, rest.triangles, centre + d), 0.5) << "a vertex of cell " << b << " lies inside cell " << a;
+        ASSERT_LT(winding_number(xa, rest.triangles, centre + d), 0.5)
+            << "a vertex of cell " << b << " lies inside cell " << a;
       }
     }
   }
@@ -153,7 +154,8 @@ TEST(CellPlacement, PacksOtherBoxes) {
   // Any box: periodic along all three axes (13 cells at phi 0.3 in 16 um cubed), and walled on all six faces (a 20 um
   // cube with 1 um clearance, 17 cells at phi 0.2; random sequential addition stops at 10 cells, 0.115).
   const hr::TriangleMesh rbc = hr::make_rbc_mesh({});
-  const hr::PlacementBox periodic{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {16e-6, 16e-6, 16e-6}, .periodic = {true, true, true}};
+  const hr::PlacementBox periodic{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {16e-6, 16e-6, 16e-6},
+                                  .periodic = {true, true, true}};
   const hr::PlacementBox walled{.lower_m = {-10e-6, -10e-6, -10e-6}, .upper_m = {10e-6, 10e-6, 10e-6}, .periodic = {}};
   for (const auto& [box, phi, clearance] : {std::tuple{periodic, 0.3, 0.0}, std::tuple{walled, 0.2, 1e-6}}) {
     const hr::PlacementSpec spec{.hematocrit = phi, .min_gap_m = 0.5e-6, .wall_clearance_m = clearance, .seed = 4};
@@ -196,7 +198,8 @@ TEST(CellPlacement, RefusesWhatTheBoxCannotHold) {
     }
   }
   // More cell volume than the room between the wall clearances: refused before any try (6 um plates, 2 um clearance).
-  const hr::PlacementBox slab{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {24e-6, 6e-6, 16e-6}, .periodic = {true, false, true}};
+  const hr::PlacementBox slab{.lower_m = {0.0, 0.0, 0.0}, .upper_m = {24e-6, 6e-6, 16e-6},
+                              .periodic = {true, false, true}};
   try {
     (void)hr::place_cells(rbc, slab, {.hematocrit = 0.5, .min_gap_m = 0.5e-6, .wall_clearance_m = 2e-6, .seed = 1});
     FAIL() << "placement at phi 0.5 in a 2 um slab should be impossible";
