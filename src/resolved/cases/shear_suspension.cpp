@@ -3,6 +3,7 @@
 #include "resolved/cases/shear_suspension.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -188,11 +189,13 @@ int run_shear_suspension(const common::CaseRequest& request) {
                            .wall_clearance_m = std::max(kWallClearanceDx * c.numerics.dx_m, c.contact.range_m),
                            .seed = c.seed};
   Placement placement;
+  const auto placing = std::chrono::steady_clock::now();
   try {
     placement = place_cells(rest, box, spec);
   } catch (const PlacementImpossible& e) {
     throw common::ConfigError(fmt::format("{}: [cells] hematocrit = {:g}: {}", file, c.hematocrit, e.what()));
   }
+  const double placement_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - placing).count();
   if (request.resume) {
     throw common::ConfigError(fmt::format("{}: the shear-suspension case writes no checkpoints yet: --resume cannot "
                                           "continue it; start it anew", file));
@@ -202,9 +205,15 @@ int run_shear_suspension(const common::CaseRequest& request) {
   SuspensionRun& r = *run;
   check_contact_stability(c, r, file);
   if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
-  ctx.log().info("{}: {} cells (hematocrit {:.4g}, asked {:.4g}; {} placement tries), shear rate {:.4g} 1/s, Re = {:.4g}, "
-                 "lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, tau = {:.3f}, membrane mass factor {:.3g}", type,
-                 r.cells->size(), placement.hematocrit, c.hematocrit, placement.attempts, c.shear_rate_1_s, c.reynolds,
+  ctx.log().info("{}: {} cells (hematocrit {:.4g}, asked {:.4g}; {}: {} placement tries{}, {:.1f} s), shear rate {:.4g} "
+                 "1/s, Re = {:.4g}, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, tau = {:.3f}, membrane mass factor {:.3g}",
+                 type, r.cells->size(), placement.hematocrit, c.hematocrit, placement_method_name(placement.method),
+                 placement.attempts,
+                 placement.method == PlacementMethod::growth_packing
+                     ? fmt::format(", grown from {:.3f} of full size in {} sweeps", placement.packing_start_scale,
+                                   placement.packing_sweeps)
+                     : std::string(),
+                 placement_seconds, c.shear_rate_1_s, c.reynolds,
                  r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m, c.numerics.dt_s, c.numerics.collision.tau,
                  c.numerics.membrane_mass_factor);
   if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
@@ -264,6 +273,8 @@ int run_shear_suspension(const common::CaseRequest& request) {
                          {"placement_gap_m", c.placement_gap_m},
                          {"placement_seed", c.seed},
                          {"placement_tries", placement.attempts},
+                         {"placement_method", placement_method_name(placement.method)},
+                         {"placement_packing_sweeps", placement.packing_sweeps},
                          {"steps", loop.step()},
                          {"simulated_time_s", simulated_s},
                          {"wall_s_per_simulated_ms", simulated_s > 0.0 ? ctx.wall_seconds() / (1e3 * simulated_s) : 0.0},
