@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // One sphere pulled along the axis of the CFD-DEM tube through plasma at rest: the coupled drag against
 // Haberman & Sayre (1958) at the same confinement d_p / D, and the sphere's own disturbance of the fluid
-// velocity the closure is given in two-way coupling.
+// velocity the closure is given in two-way coupling, without and with the exchange smoothed over a length l.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +15,7 @@
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
+#include "unresolved/dem/particle_params.hpp"
 #include "periodic_tube.hpp"
 
 namespace {
@@ -75,7 +76,7 @@ struct DragRun {
 /// spikes make this single-sphere run oscillate (CouplingSettings::void_fraction_rate).
 /// `closure_factor` != 1 replaces the Stokes closure by ScaledStokesDrag (negative control only).
 DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, int cells_across = 10,
-                     double closure_factor = 1.0) {
+                     double closure_factor = 1.0, double smoothing_length_m = 0.0) {
   const double u0 = 1e-4;
   const double length = 2.0 * diameter_m;
   const double r = 0.5 * diameter_m;
@@ -106,7 +107,7 @@ DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, in
                           {.n_coupling = 100, .void_fraction_feedback = two_way, .two_way = two_way, .void_fraction_rate = false,
                            .pressure_force = false, .viscous_force = false, .axis = 2, .axis_point_m = {0, 0, 0},
                            .tube_radius_m = r, .wall_correction = WallCorrection::haberman_sayre,
-                           .self_induced_correction = corrected},
+                           .self_induced_correction = corrected, .smoothing_length_m = smoothing_length_m},
                           std::move(closures));
   const ParticleStore& p = dem.particles();
   DragRun mean{};
@@ -120,8 +121,10 @@ DragRun drag_on_axis(double diameter_m, bool two_way, bool corrected = false, in
     mean.fluid_ratio += uf / u / kAveraged;
     mean.velocity_m_s += u / kAveraged;
   }
-  std::printf("D = %3.0f um, %s coupling: U = %.5e m/s (U0 = %.0e), drag / (3 pi mu d_p U K_HS) = %.5f, u_f / U = %.4f\n",
-              diameter_m * 1e6, two_way ? (corrected ? "two-way corrected" : "two-way") : "one-way", mean.velocity_m_s, u0, mean.force_ratio, mean.fluid_ratio);
+  std::printf("D = %3.0f um, %2d cells, l = %.2f um, %s coupling: U = %.5e m/s (U0 = %.0e), drag / (3 pi mu d_p U K_HS) = %.5f, u_f / U = %.4f\n",
+              diameter_m * 1e6, cells_across, smoothing_length_m * 1e6,
+              two_way ? (corrected ? "two-way corrected" : "two-way") : "one-way", mean.velocity_m_s, u0,
+              mean.force_ratio, mean.fluid_ratio);
   return mean;
 }
 
@@ -193,6 +196,56 @@ TEST(SphereInTube, SelfInducedCorrectionRefusesAGridFinerThanTheSphere) {
   // D = 30 um, 10 cells across: d_p / dx = 1.9, beta M = 1.2-4.6 with the sphere's own void fraction: the lagged
   // correction runs away with the fluid it drags (measured without the check: U = 60 U0 after 50 steps).
   EXPECT_THROW((void)drag_on_axis(30e-6, true, true), hs::common::ConfigError);
+}
+
+/// Upper bound on u_f / U for a sphere whose reaction is smoothed over l, from the continuum: the implicit diffusion
+/// step q - l^2 lap q = source spreads a point force F with the kernel exp(-r / l) / (4 pi l^2 r), whose Stokes flow
+/// in unbounded fluid has u(0) = F / (6 pi mu l) at its centre (the Oseen tensor's angular mean 4/3 over 8 pi mu r,
+/// integrated against the kernel). With F = 3 pi mu d_p K_HS (U - u_f): u_f / U = a / (1 + a), a = K_HS d_p / (2 l).
+/// The tube's wall and its zero net flux only hold the fluid back, so the coupled value must lie below it.
+double unbounded_smoothed_self_disturbance(double d_p, double diameter_m, double l) {
+  const double a = haberman_sayre_1958(d_p / diameter_m) * d_p / (2.0 * l);
+  return a / (1.0 + a);
+}
+
+TEST(SphereInTube, SmoothingOverTheSphereSizeLowersTheSelfDisturbanceButDoesNotRemoveIt) {
+  // D = 30 um, 10 cells across: d_p / dx = 1.88, the grid of `validate pries`, where the unsmoothed two-way drag is
+  // 0.29 of the law (test above). Smoothing the exchange over l = d_p / 2 and d_p spreads the sphere's reaction
+  // over a physical length, so the fluid it drags at its centre is slower (measured u_f / U = 0.71 / 0.34 / 0.16 for
+  // l = 0 / d_p / 2 / d_p; 0.44 / 0.21 at 15 cells and 0.41 / 0.19 at 20, where l = 0 runs away: docs/closures.md).
+  const double d = default_particle_params().diameter_m;
+  const double diameter = 30e-6;
+  const DragRun none = drag_on_axis(diameter, true);
+  const DragRun half = drag_on_axis(diameter, true, false, 10, 1.0, 0.5 * d);
+  const DragRun full = drag_on_axis(diameter, true, false, 10, 1.0, d);
+  for (const DragRun* run : {&half, &full}) {
+    // Still the law at the disturbed slip (Stokes closure, linear at Re_p ~ 5e-4): exact up to round-off.
+    EXPECT_NEAR(run->force_ratio, 1.0 - run->fluid_ratio, 1e-6);
+    // The pulled state: the drag balances the pull, U (1 - u_f / U) = U0. The mean of the product and the product of
+    // the means of the last 20 steps differ by the covariance of their few-% step-to-step wobble: 1e-3.
+    EXPECT_NEAR(run->velocity_m_s * run->force_ratio, 1e-4, 1e-3 * 1e-4);
+  }
+  // Smoothing lowers the self-disturbance, more for the longer length, and stays below the continuum bound.
+  EXPECT_LT(half.fluid_ratio, none.fluid_ratio);
+  EXPECT_LT(full.fluid_ratio, half.fluid_ratio);
+  EXPECT_GT(full.fluid_ratio, 0.0);
+  EXPECT_LT(half.fluid_ratio, unbounded_smoothed_self_disturbance(d, diameter, 0.5 * d));   // 0.62
+  EXPECT_LT(full.fluid_ratio, unbounded_smoothed_self_disturbance(d, diameter, d));         // 0.45
+  // ...but it does not restore the drag law: at l = d_p the drag is still outside issue 7's 3% drag-law band (the
+  // discretisation's spread over 10-20 cells is 0.16-0.21, far from 0.03). The law needs the undisturbed velocity.
+  EXPECT_GT(full.fluid_ratio, 0.03);
+}
+
+TEST(SphereInTube, SmoothingKeepsTheSelfDisturbanceBoundedOnAFinerGrid) {
+  // D = 30 um, 15 cells across (d_p / dx = 2.8): without smoothing the sphere and the fluid it drags run away together
+  // (measured U = -23 U0, u_f / U = 0.99 after 50 steps); with l = d_p the sphere's footprint is the physical length,
+  // not the cell, and u_f / U stays below the continuum bound (measured 0.21, 0.16 at 10 cells).
+  const double d = default_particle_params().diameter_m;
+  const DragRun full = drag_on_axis(30e-6, true, false, 15, 1.0, d);
+  EXPECT_NEAR(full.force_ratio, 1.0 - full.fluid_ratio, 1e-6);
+  EXPECT_NEAR(full.velocity_m_s * full.force_ratio, 1e-4, 1e-3 * 1e-4);
+  EXPECT_GT(full.fluid_ratio, 0.0);
+  EXPECT_LT(full.fluid_ratio, unbounded_smoothed_self_disturbance(d, 30e-6, d));
 }
 
 }  // namespace
