@@ -14,6 +14,27 @@ namespace hs::unresolved {
 namespace {
 constexpr double kRelativeTolerance = 1e-13;
 constexpr int kMaxIterations = 1000;
+
+/// y = A x for the K interleaved columns, and pap_j = sum_r x_rj y_rj in the same pass (the CG's p . A p).
+template <std::size_t K>
+void apply_dot(const std::vector<double>& diagonal, const std::vector<std::size_t>& row_start,
+               const std::vector<std::size_t>& neighbour, const std::vector<double>& coefficient,
+               const std::vector<double>& x, std::vector<double>& y, std::array<double, K>& dot) {
+  const std::size_t rows = diagonal.size();
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::array<double, K> s{};
+    for (std::size_t j = 0; j < K; ++j) s[j] = diagonal[r] * x[r * K + j];
+    for (std::size_t e = row_start[r]; e < row_start[r + 1]; ++e) {
+      const double a = coefficient[e];
+      const double* xn = &x[neighbour[e] * K];
+      for (std::size_t j = 0; j < K; ++j) s[j] -= a * xn[j];
+    }
+    for (std::size_t j = 0; j < K; ++j) {
+      y[r * K + j] = s[j];
+      dot[j] += x[r * K + j] * s[j];
+    }
+  }
+}
 }  // namespace
 
 DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m) : length_m_(length_m) {
@@ -103,6 +124,7 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
   std::vector<double>& x = q;
   std::array<double, K> b_norm{};
   std::array<double, K> rz{};
+  std::array<double, K> r_norm{};   // |r|^2, summed where r is updated (one pass fewer over the vectors)
   std::array<bool, K> active{};
   std::array<int, K> iterations{};
   apply<K>(x, ap_);
@@ -115,6 +137,7 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
       z_[i] = r_[i] * inverse_diagonal_[r];
       p_[i] = z_[i];
       rz[j] += r_[i] * z_[i];
+      r_norm[j] += r_[i] * r_[i];
     }
   }
   int remaining = 0;
@@ -124,10 +147,6 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
     remaining += active[j] ? 1 : 0;
   }
   for (int it = 0; it < kMaxIterations; ++it) {
-    std::array<double, K> r_norm{};
-    for (std::size_t r = 0; r < rows; ++r) {
-      for (std::size_t j = 0; j < K; ++j) r_norm[j] += r_[r * K + j] * r_[r * K + j];
-    }
     for (std::size_t j = 0; j < K; ++j) {
       if (active[j] && std::sqrt(r_norm[j]) <= kRelativeTolerance * b_norm[j]) {
         active[j] = false;
@@ -136,14 +155,12 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
       }
     }
     if (remaining == 0) return *std::max_element(iterations.begin(), iterations.end());
-    apply<K>(p_, ap_);
     std::array<double, K> pap{};
-    for (std::size_t r = 0; r < rows; ++r) {
-      for (std::size_t j = 0; j < K; ++j) pap[j] += p_[r * K + j] * ap_[r * K + j];
-    }
+    apply_dot<K>(diagonal_, row_start_, neighbour_, coefficient_, p_, ap_, pap);
     std::array<double, K> alpha{};   // 0 for a converged column: its x and r stay
     for (std::size_t j = 0; j < K; ++j) alpha[j] = active[j] ? rz[j] / pap[j] : 0.0;
     std::array<double, K> rz_new{};
+    r_norm = {};
     for (std::size_t r = 0; r < rows; ++r) {
       for (std::size_t j = 0; j < K; ++j) {
         const std::size_t i = r * K + j;
@@ -151,6 +168,7 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
         r_[i] -= alpha[j] * ap_[i];
         z_[i] = r_[i] * inverse_diagonal_[r];
         rz_new[j] += r_[i] * z_[i];
+        r_norm[j] += r_[i] * r_[i];
       }
     }
     std::array<double, K> beta{};
