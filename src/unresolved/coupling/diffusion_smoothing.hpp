@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <initializer_list>
+#include <memory>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -25,12 +26,16 @@ namespace hs::unresolved {
 ///    Laplacian has the continuous one's second moment), so the footprint is l, not a number of cells.
 /// Solved by Jacobi-preconditioned conjugate gradients to a relative residual of 1e-13 (the conservation and
 /// the exchange bookkeeping then hold to round-off; the coupling also measures and returns any imbalance).
-/// The operator is assembled once (the mesh is static); smooth_together() solves several fields in one CG whose
-/// every iteration makes one pass over the operator for all of them (each field keeps its own CG scalars and its
-/// own stopping test, so each result is what smooth() alone gives, to the solver's tolerance).
+/// The operator is assembled once (the mesh is static). Up to kDirectMaxRows fluid cells it is also factorised once
+/// (sparse LDL^T, AMD ordering), and each smoothing is two triangular solves, checked against the same 1e-13
+/// relative residual (CG from the start if ever above it); on larger grids, or with Method::conjugate_gradient, CG.
+/// smooth_together() solves several fields at once: one pass over the factor or the operator for all of them (in
+/// CG each field keeps its own scalars and stopping test), so each result is what smooth() alone gives, to the
+/// solver's tolerance.
 class DiffusionSmoothing {
  public:
-  DiffusionSmoothing(const FvmGrid& grid, double length_m);
+  enum class Method { automatic, conjugate_gradient };
+  DiffusionSmoothing(const FvmGrid& grid, double length_m, Method method = Method::automatic);
 
   /// Smooths a density field (per unit fluid volume) in place, interior fluid cells only; other cells untouched.
   void smooth(BlockField<double>& q);
@@ -40,9 +45,13 @@ class DiffusionSmoothing {
   void smooth_together(std::initializer_list<BlockField<double>*> scalars,
                        std::initializer_list<BlockField<hs::common::Vec3>*> vectors);
   static constexpr int kMaxColumns = 8;
+  /// The direct factor's limit: a 3D grid's LDL^T fill grows as rows^(4/3); 20000 rows is a few MB.
+  static constexpr std::size_t kDirectMaxRows = 20000;
+  /// Whether smoothing uses the factor (false: CG).
+  [[nodiscard]] bool direct() const { return factor_ != nullptr; }
 
   [[nodiscard]] double length_m() const { return length_m_; }
-  /// CG iterations of the last smooth() (the largest over the components of a vector field).
+  /// CG iterations of the last smooth() (the largest over the fields smoothed together; 0 by the factor).
   [[nodiscard]] int last_iterations() const { return last_iterations_; }
 
  private:
@@ -51,6 +60,9 @@ class DiffusionSmoothing {
   template <std::size_t K>
   int solve(std::vector<double>& q);
   int solve_columns(std::vector<double>& q, int columns);
+  /// The factor's solve of the same system; false if a column's residual is above the CG's tolerance.
+  bool solve_direct(std::vector<double>& q, int columns);
+  struct Factor;   // Eigen's LDL^T, kept out of this header
   template <std::size_t K>
   void apply(const std::vector<double>& x, std::vector<double>& y) const;
 
@@ -64,6 +76,7 @@ class DiffusionSmoothing {
   std::vector<std::size_t> neighbour_;
   std::vector<double> coefficient_;       // l^2 dx (open area fraction): positive, symmetric
   std::vector<double> x_, r_, z_, p_, ap_;   // CG work vectors, rows x columns (row-major: one row's columns together)
+  std::shared_ptr<const Factor> factor_;   // null: CG
   int last_iterations_ = 0;
 };
 
