@@ -45,8 +45,10 @@ class DiffusionSmoothing {
   void smooth_together(std::initializer_list<BlockField<double>*> scalars,
                        std::initializer_list<BlockField<hs::common::Vec3>*> vectors);
   static constexpr int kMaxColumns = 8;
-  /// The direct factor's limit: a 3D grid's LDL^T fill grows as rows^(4/3); 20000 rows is a few MB.
-  static constexpr std::size_t kDirectMaxRows = 20000;
+  /// The direct factor's limit. A 3D grid's LDL^T fill grows about as rows^(4/3) (AMD on a periodic 7-point box:
+  /// 1.4 MB at 2000 rows, 12 MB at 8000, 54 MB and 3 s to factorise at 20000, where a field's two triangular
+  /// solves stream the whole factor and no longer beat ~45 CG iterations in cache by much); beyond it, CG.
+  static constexpr std::size_t kDirectMaxRows = 10000;
   /// Whether smoothing uses the factor (false: CG).
   [[nodiscard]] bool direct() const { return factor_ != nullptr; }
 
