@@ -261,8 +261,7 @@ void CfdDemCoupling::fill_fields() {
       momentum[c] += w * cp.drag_coefficient_N_s_m()[k / kMarkersPerSphere] / map_.fluid_volume_m3(c) *
                      particle_velocity(cp, k / kMarkersPerSphere);
     });
-    smoothing_->smooth(ksl);
-    smoothing_->smooth(momentum);
+    smoothing_->smooth_together({&ksl}, {&momentum});   // one solve for the four columns
     for (std::size_t c = 0; c < ksl.data().size(); ++c) us[c] = ksl[c] > 0.0 ? momentum[c] / ksl[c] : Vec3{};
   } else {
     for (std::size_t c = 0; c < weight.data().size(); ++c) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include <Eigen/SparseCholesky>
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
@@ -14,9 +15,34 @@ namespace hs::unresolved {
 namespace {
 constexpr double kRelativeTolerance = 1e-13;
 constexpr int kMaxIterations = 1000;
+
+/// y = A x for the K interleaved columns, and pap_j = sum_r x_rj y_rj in the same pass (the CG's p . A p).
+template <std::size_t K>
+void apply_dot(const std::vector<double>& diagonal, const std::vector<std::size_t>& row_start,
+               const std::vector<std::size_t>& neighbour, const std::vector<double>& coefficient,
+               const std::vector<double>& x, std::vector<double>& y, std::array<double, K>& dot) {
+  const std::size_t rows = diagonal.size();
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::array<double, K> s{};
+    for (std::size_t j = 0; j < K; ++j) s[j] = diagonal[r] * x[r * K + j];
+    for (std::size_t e = row_start[r]; e < row_start[r + 1]; ++e) {
+      const double a = coefficient[e];
+      const double* xn = &x[neighbour[e] * K];
+      for (std::size_t j = 0; j < K; ++j) s[j] -= a * xn[j];
+    }
+    for (std::size_t j = 0; j < K; ++j) {
+      y[r * K + j] = s[j];
+      dot[j] += x[r * K + j] * s[j];
+    }
+  }
+}
 }  // namespace
 
-DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m) : length_m_(length_m) {
+struct DiffusionSmoothing::Factor {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+};
+
+DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m, Method method) : length_m_(length_m) {
   if (!(length_m > 0.0) || !std::isfinite(length_m)) {
     throw hs::common::ConfigError(fmt::format("coupling: smoothing length {} m must be > 0", length_m));
   }
@@ -70,78 +96,194 @@ DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m) : l
     diagonal_.push_back(diagonal);
     row_start_.push_back(neighbour_.size());
   }
+  inverse_diagonal_.reserve(diagonal_.size());
+  for (const double d : diagonal_) inverse_diagonal_.push_back(1.0 / d);
   const std::size_t rows = cell_index_.size();
-  r_.resize(rows);
-  z_.resize(rows);
-  p_.resize(rows);
-  ap_.resize(rows);
-}
-
-void DiffusionSmoothing::apply(const std::vector<double>& x, std::vector<double>& y) const {
-  for (std::size_t r = 0; r < x.size(); ++r) {
-    double s = diagonal_[r] * x[r];
-    for (std::size_t e = row_start_[r]; e < row_start_[r + 1]; ++e) s -= coefficient_[e] * x[neighbour_[e]];
-    y[r] = s;
-  }
-}
-
-int DiffusionSmoothing::solve(std::vector<double>& q) {
-  // b = V q; the start x = q is exact where q is flat, so smooth regions converge at once.
-  const std::size_t rows = q.size();
-  std::vector<double>& x = q;
-  double b_norm = 0.0;
-  apply(x, ap_);
-  double rz = 0.0;
+  if (method == Method::conjugate_gradient || rows == 0 || rows > kDirectMaxRows) return;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(rows + neighbour_.size());
   for (std::size_t r = 0; r < rows; ++r) {
-    const double b = volume_[r] * q[r];
-    b_norm += b * b;
-    r_[r] = b - ap_[r];
-    z_[r] = r_[r] / diagonal_[r];
-    p_[r] = z_[r];
-    rz += r_[r] * z_[r];
-  }
-  b_norm = std::sqrt(b_norm);
-  if (b_norm == 0.0) return 0;
-  for (int it = 0; it < kMaxIterations; ++it) {
-    double r_norm = 0.0;
-    for (std::size_t r = 0; r < rows; ++r) r_norm += r_[r] * r_[r];
-    if (std::sqrt(r_norm) <= kRelativeTolerance * b_norm) return it;
-    apply(p_, ap_);
-    double pap = 0.0;
-    for (std::size_t r = 0; r < rows; ++r) pap += p_[r] * ap_[r];
-    const double alpha = rz / pap;
-    double rz_new = 0.0;
-    for (std::size_t r = 0; r < rows; ++r) {
-      x[r] += alpha * p_[r];
-      r_[r] -= alpha * ap_[r];
-      z_[r] = r_[r] / diagonal_[r];
-      rz_new += r_[r] * z_[r];
+    const auto row = static_cast<int>(r);
+    entries.emplace_back(row, row, diagonal_[r]);
+    for (std::size_t e = row_start_[r]; e < row_start_[r + 1]; ++e) {
+      entries.emplace_back(row, static_cast<int>(neighbour_[e]), -coefficient_[e]);
     }
-    const double beta = rz_new / rz;
-    rz = rz_new;
-    for (std::size_t r = 0; r < rows; ++r) p_[r] = z_[r] + beta * p_[r];
+  }
+  Eigen::SparseMatrix<double> a(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(rows));
+  a.setFromTriplets(entries.begin(), entries.end());   // a repeated pair (a two-cell periodic axis) adds up
+  auto factor = std::make_shared<Factor>();
+  factor->ldlt.compute(a);
+  if (factor->ldlt.info() == Eigen::Success) factor_ = std::move(factor);   // else CG, which needs no factor
+}
+
+bool DiffusionSmoothing::solve_direct(std::vector<double>& q, int columns) {
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const auto rows = static_cast<Eigen::Index>(cell_index_.size());
+  Eigen::Map<RowMajor> x(q.data(), rows, columns);
+  Eigen::MatrixXd b(rows, columns);
+  for (Eigen::Index r = 0; r < rows; ++r) b.row(r) = volume_[static_cast<std::size_t>(r)] * x.row(r);
+  const Eigen::MatrixXd solution = factor_->ldlt.solve(b);
+  // The CG's own test on the result: |b - A x| <= 1e-13 |b| for every column.
+  const auto k = static_cast<std::size_t>(columns);
+  std::vector<double> xs(q.size());
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    for (Eigen::Index j = 0; j < columns; ++j) xs[static_cast<std::size_t>(r) * k + static_cast<std::size_t>(j)] = solution(r, j);
+  }
+  for (Eigen::Index j = 0; j < columns; ++j) {
+    double residual = 0.0;
+    for (Eigen::Index r = 0; r < rows; ++r) {
+      const auto ru = static_cast<std::size_t>(r);
+      double s = diagonal_[ru] * xs[ru * k + static_cast<std::size_t>(j)];
+      for (std::size_t e = row_start_[ru]; e < row_start_[ru + 1]; ++e) {
+        s -= coefficient_[e] * xs[neighbour_[e] * k + static_cast<std::size_t>(j)];
+      }
+      residual += (b(r, j) - s) * (b(r, j) - s);
+    }
+    if (std::sqrt(residual) > kRelativeTolerance * b.col(j).norm()) return false;
+  }
+  q = std::move(xs);
+  return true;
+}
+
+template <std::size_t K>
+void DiffusionSmoothing::apply(const std::vector<double>& x, std::vector<double>& y) const {
+  const std::size_t rows = cell_index_.size();
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::array<double, K> s{};
+    for (std::size_t j = 0; j < K; ++j) s[j] = diagonal_[r] * x[r * K + j];
+    for (std::size_t e = row_start_[r]; e < row_start_[r + 1]; ++e) {
+      const double a = coefficient_[e];
+      const double* xn = &x[neighbour_[e] * K];
+      for (std::size_t j = 0; j < K; ++j) s[j] -= a * xn[j];
+    }
+    for (std::size_t j = 0; j < K; ++j) y[r * K + j] = s[j];
+  }
+}
+
+template <std::size_t K>
+int DiffusionSmoothing::solve(std::vector<double>& q) {
+  // b = V q; the start x = q is exact where q is flat, so smooth regions converge at once. Each column j is its own
+  // CG (its own alpha, beta, stopping test); only the pass over the operator is shared. A converged column is left
+  // as it is, so its result does not depend on which other fields share the solve.
+  const std::size_t rows = cell_index_.size();
+  const std::size_t size = rows * K;
+  r_.resize(size);
+  z_.resize(size);
+  p_.resize(size);
+  ap_.resize(size);
+  std::vector<double>& x = q;
+  std::array<double, K> b_norm{};
+  std::array<double, K> rz{};
+  std::array<double, K> r_norm{};   // |r|^2, summed where r is updated (one pass fewer over the vectors)
+  std::array<bool, K> active{};
+  std::array<int, K> iterations{};
+  apply<K>(x, ap_);
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t j = 0; j < K; ++j) {
+      const std::size_t i = r * K + j;
+      const double b = volume_[r] * q[i];
+      b_norm[j] += b * b;
+      r_[i] = b - ap_[i];
+      z_[i] = r_[i] * inverse_diagonal_[r];
+      p_[i] = z_[i];
+      rz[j] += r_[i] * z_[i];
+      r_norm[j] += r_[i] * r_[i];
+    }
+  }
+  int remaining = 0;
+  for (std::size_t j = 0; j < K; ++j) {
+    b_norm[j] = std::sqrt(b_norm[j]);
+    active[j] = b_norm[j] != 0.0;   // q = 0: x = 0 is the answer
+    remaining += active[j] ? 1 : 0;
+  }
+  for (int it = 0; it < kMaxIterations; ++it) {
+    for (std::size_t j = 0; j < K; ++j) {
+      if (active[j] && std::sqrt(r_norm[j]) <= kRelativeTolerance * b_norm[j]) {
+        active[j] = false;
+        iterations[j] = it;
+        --remaining;
+      }
+    }
+    if (remaining == 0) return *std::max_element(iterations.begin(), iterations.end());
+    std::array<double, K> pap{};
+    apply_dot<K>(diagonal_, row_start_, neighbour_, coefficient_, p_, ap_, pap);
+    std::array<double, K> alpha{};   // 0 for a converged column: its x and r stay
+    for (std::size_t j = 0; j < K; ++j) alpha[j] = active[j] ? rz[j] / pap[j] : 0.0;
+    std::array<double, K> rz_new{};
+    r_norm = {};
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t j = 0; j < K; ++j) {
+        const std::size_t i = r * K + j;
+        x[i] += alpha[j] * p_[i];
+        r_[i] -= alpha[j] * ap_[i];
+        z_[i] = r_[i] * inverse_diagonal_[r];
+        rz_new[j] += r_[i] * z_[i];
+        r_norm[j] += r_[i] * r_[i];
+      }
+    }
+    std::array<double, K> beta{};
+    for (std::size_t j = 0; j < K; ++j) {
+      if (!active[j]) continue;
+      beta[j] = rz_new[j] / rz[j];
+      rz[j] = rz_new[j];
+    }
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t j = 0; j < K; ++j) p_[r * K + j] = z_[r * K + j] + beta[j] * p_[r * K + j];
+    }
   }
   throw hs::common::NumericalError(fmt::format(
       "coupling: the smoothing solve did not reach a relative residual of {:.0e} in {} iterations (smoothing length "
       "{:.4g} m)", kRelativeTolerance, kMaxIterations, length_m_));
 }
 
-void DiffusionSmoothing::smooth(BlockField<double>& q) {
-  std::vector<double> x(cell_index_.size());
-  for (std::size_t r = 0; r < x.size(); ++r) x[r] = q[cell_index_[r]];
-  last_iterations_ = solve(x);
-  for (std::size_t r = 0; r < x.size(); ++r) q[cell_index_[r]] = x[r];
+int DiffusionSmoothing::solve_columns(std::vector<double>& q, int columns) {
+  switch (columns) {
+    case 1: return solve<1>(q);
+    case 2: return solve<2>(q);
+    case 3: return solve<3>(q);
+    case 4: return solve<4>(q);
+    case 5: return solve<5>(q);
+    case 6: return solve<6>(q);
+    case 7: return solve<7>(q);
+    case 8: return solve<8>(q);
+    default: break;
+  }
+  throw hs::common::ConfigError(fmt::format("coupling: {} fields smoothed together; 1 to {} allowed", columns,
+                                            kMaxColumns));
 }
 
-void DiffusionSmoothing::smooth(BlockField<hs::common::Vec3>& q) {
-  std::vector<double> x(cell_index_.size());
-  int most = 0;
-  for (int a = 0; a < 3; ++a) {
-    for (std::size_t r = 0; r < x.size(); ++r) x[r] = q[cell_index_[r]][a];
-    most = std::max(most, solve(x));
-    for (std::size_t r = 0; r < x.size(); ++r) q[cell_index_[r]][a] = x[r];
+void DiffusionSmoothing::smooth(BlockField<double>& q) { smooth_together({&q}, {}); }
+
+void DiffusionSmoothing::smooth(BlockField<hs::common::Vec3>& q) { smooth_together({}, {&q}); }
+
+void DiffusionSmoothing::smooth_together(std::initializer_list<BlockField<double>*> scalars,
+                                         std::initializer_list<BlockField<hs::common::Vec3>*> vectors) {
+  const int columns = static_cast<int>(scalars.size() + 3 * vectors.size());
+  const std::size_t rows = cell_index_.size();
+  const auto k = static_cast<std::size_t>(columns);
+  x_.resize(rows * k);
+  // Gather: row r's columns are the scalars in order, then each vector's x, y, z.
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::size_t c = cell_index_[r];
+    std::size_t j = r * k;
+    for (const BlockField<double>* f : scalars) x_[j++] = (*f)[c];
+    for (const BlockField<hs::common::Vec3>* f : vectors) {
+      for (int a = 0; a < 3; ++a) x_[j++] = (*f)[c][a];
+    }
   }
-  last_iterations_ = most;
+  if (factor_ && columns > 0 && solve_direct(x_, columns)) {
+    last_iterations_ = 0;
+  } else {
+    last_iterations_ = solve_columns(x_, columns);
+  }
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::size_t c = cell_index_[r];
+    std::size_t j = r * k;
+    for (BlockField<double>* f : scalars) (*f)[c] = x_[j++];
+    for (BlockField<hs::common::Vec3>* f : vectors) {
+      for (int a = 0; a < 3; ++a) (*f)[c][a] = x_[j++];
+    }
+  }
 }
 
 }  // namespace hs::unresolved
