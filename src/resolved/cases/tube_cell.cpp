@@ -319,7 +319,9 @@ int run_tube_cell(const common::CaseRequest& request) {
   }
   StageOutcome two;
   if (c.extrapolate_lattice_memory) {
-    const TubeCellConfig h = half_time_step_stage(c);
+    TubeCellConfig h = half_time_step_stage(c);
+    // Stage 1 steady (not periodic) and settled: no tumble to rule out, so stage 2's steady window is the spin-up's.
+    h.starts_steady = one.settled && one.results.value("steady", false) && !one.results.value("periodic", false);
     auto run = build(h);
     print_stage(ctx.log(), h, *run, kHalfTimeStepStage);
     const bool resume_two = stage_one_done && checkpoint_stage(ctx) == kHalfTimeStepStage;

@@ -58,6 +58,8 @@ struct TubeCellConfig {
   long sample_every_steps;
   long spin_up_steps;               // the drive is switched on smoothly over these steps
   double transient_s;               // start-up discarded before settling is judged (kMembraneTransientTimes tau_m)
+  bool starts_steady = false;       // a stage that starts from a settled, steady (not periodic) cell: its steady
+                                    // window need not span a Jeffery period (no tumble to rule out)
 };
 
 /// Jeffery period 2 pi (r_e + 1/r_e) / gamma_dot of a spheroid of aspect ratio r_e = 0.37 (the RBC's thickness over

@@ -135,7 +135,8 @@ std::vector<double> TubeCellSeries::column(int which) const {
 double TubeCellSeries::steady_window_s() const {
   const double spin_up = kSpinUpTimes * config_.radius_m * config_.radius_m / config_.kinematic_viscosity_m2_s;
   const double period = jeffery_period_s(config_);
-  return std::isfinite(period) ? std::max(spin_up, period) : spin_up;
+  // A stage that starts from a cell already found steady over a Jeffery period only has its fluid to settle again.
+  return std::isfinite(period) && !config_.starts_steady ? std::max(spin_up, period) : spin_up;
 }
 
 bool TubeCellSeries::settled() const {

@@ -208,6 +208,16 @@ TEST(TubeCellConfig, HalfTimeStepStageQuartersTheLatticeWeissenbergAtTheSameVisc
   EXPECT_DOUBLE_EQ(h.membrane_mass_factor, c.membrane_mass_factor);   // the same physical inertia
 }
 
+TEST(TubeCellSeries, AStageFromASteadyCellNeedsNoJefferyPeriodInItsSteadyWindow) {
+  // r* 0.5, Re 0.5: Jeffery period 19.3 / (2 U_max r* / R) = 48 ms, spin-up window 5 R^2 / nu = 3.1 ms.
+  TubeCellConfig c = read_drag_case(0.5);
+  const TubeCellSeries from_rest(c, 94.1e-18);
+  EXPECT_NEAR(from_rest.steady_window_s(), jeffery_period_s(c), 1e-12);
+  c.starts_steady = true;
+  const TubeCellSeries from_steady(c, 94.1e-18);
+  EXPECT_NEAR(from_steady.steady_window_s(), 5.0 * c.radius_m * c.radius_m / c.kinematic_viscosity_m2_s, 1e-12);
+}
+
 TEST(TubeCellConfig, ExtrapolationToZeroWeissenbergIsExactForALine) {
   // Q = 2 - 1300 Wi (the measured lift slope at ratio 5.85): the two stages give back Q(0) = 2 whatever the pair.
   const auto q = [](double wi) { return 2.0 - 1300.0 * wi; };
