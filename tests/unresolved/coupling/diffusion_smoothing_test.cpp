@@ -45,6 +45,17 @@ PlaneSource smooth_plane_source(double length_m, double l_m, int cells) {
 // the same second moment exactly (sum_i i^2 (q_{i+1} - 2 q_i + q_{i-1}) = 2 sum_i q_i), so on every grid the footprint
 // is l, not a number of cells. The periodic box is 40 l long: the wrapped tail is e^-20 of the peak, ~1e-7 of the
 // moment at most; the CG tolerance (1e-13) is far below. Band 1e-6.
+/// A D = 30 um tube, 60 um long and periodic along its axis, at dx = 2 um: cut cells at the wall.
+FvmGrid periodic_tube_grid() {
+  const double r = 15e-6;
+  const double length = 60e-6;
+  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
+  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = 2e-6, .sides = {}};
+  spec.sides[4].type = SideType::periodic;
+  spec.sides[5].type = SideType::periodic;
+  return FvmGrid(tube, spec);
+}
+
 TEST(DiffusionSmoothing, APlaneSourceSpreadsOverTheSmoothingLengthOnEveryGrid) {
   const double l = 3e-6;
   for (const int per_length : {1, 2, 4}) {   // dx = l, l / 2, l / 4
@@ -71,13 +82,7 @@ TEST(DiffusionSmoothing, APlaneSourceSpreadsOverTheSmoothingLengthOnEveryGrid) {
 // extremes (the operator is an M-matrix: a discrete maximum principle), so a void fraction stays in [eps_min, 1].
 // The spread shrinks in the full cells (a cut cell whose faces are all closed keeps its value: nothing can leave it).
 TEST(DiffusionSmoothing, ConservesTheFieldAndKeepsItsBoundsInATube) {
-  const double r = 15e-6;
-  const double length = 60e-6;
-  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
-  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = 2e-6, .sides = {}};
-  spec.sides[4].type = SideType::periodic;
-  spec.sides[5].type = SideType::periodic;
-  const FvmGrid grid(tube, spec);
+  const FvmGrid grid = periodic_tube_grid();
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0.1, 1.0);
   BlockField<double> q(grid.cells(), 0.0);
@@ -137,13 +142,7 @@ TEST(DiffusionSmoothing, ConservesTheFieldAndKeepsItsBoundsInATube) {
 // relative residual of 1e-13 bounds each solution's error by kappa 1e-13 of its size, kappa <= 1 + 12 l^2 / dx^2 = 76
 // for the Jacobi-scaled operator here (l = 5 um, dx = 2 um): 8e-12 each, 2e-11 between the two. A zero field stays 0.
 TEST(DiffusionSmoothing, TogetherAndByTheFactorEqualEachAloneByConjugateGradients) {
-  const double r = 15e-6;
-  const double length = 60e-6;
-  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
-  FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = 2e-6, .sides = {}};
-  spec.sides[4].type = SideType::periodic;
-  spec.sides[5].type = SideType::periodic;
-  const FvmGrid grid(tube, spec);
+  const FvmGrid grid = periodic_tube_grid();
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   BlockField<double> scalar(grid.cells(), 0.0);
