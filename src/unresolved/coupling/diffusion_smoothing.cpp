@@ -146,21 +146,6 @@ bool DiffusionSmoothing::solve_direct(std::vector<double>& q, int columns) {
 }
 
 template <std::size_t K>
-void DiffusionSmoothing::apply(const std::vector<double>& x, std::vector<double>& y) const {
-  const std::size_t rows = cell_index_.size();
-  for (std::size_t r = 0; r < rows; ++r) {
-    std::array<double, K> s{};
-    for (std::size_t j = 0; j < K; ++j) s[j] = diagonal_[r] * x[r * K + j];
-    for (std::size_t e = row_start_[r]; e < row_start_[r + 1]; ++e) {
-      const double a = coefficient_[e];
-      const double* xn = &x[neighbour_[e] * K];
-      for (std::size_t j = 0; j < K; ++j) s[j] -= a * xn[j];
-    }
-    for (std::size_t j = 0; j < K; ++j) y[r * K + j] = s[j];
-  }
-}
-
-template <std::size_t K>
 int DiffusionSmoothing::solve(std::vector<double>& q) {
   // b = V q; the start x = q is exact where q is flat, so smooth regions converge at once. Each column j is its own
   // CG (its own alpha, beta, stopping test); only the pass over the operator is shared. A converged column is left
@@ -177,7 +162,8 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
   std::array<double, K> r_norm{};   // |r|^2, summed where r is updated (one pass fewer over the vectors)
   std::array<bool, K> active{};
   std::array<int, K> iterations{};
-  apply<K>(x, ap_);
+  std::array<double, K> unused_dot{};   // the start's A x; its x.Ax is not needed
+  apply_dot<K>(diagonal_, row_start_, neighbour_, coefficient_, x, ap_, unused_dot);
   for (std::size_t r = 0; r < rows; ++r) {
     for (std::size_t j = 0; j < K; ++j) {
       const std::size_t i = r * K + j;

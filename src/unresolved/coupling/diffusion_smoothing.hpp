@@ -65,8 +65,6 @@ class DiffusionSmoothing {
   /// The factor's solve of the same system; false if a column's residual is above the CG's tolerance.
   bool solve_direct(std::vector<double>& q, int columns);
   struct Factor;   // Eigen's LDL^T, kept out of this header
-  template <std::size_t K>
-  void apply(const std::vector<double>& x, std::vector<double>& y) const;
 
   double length_m_;
   std::vector<std::size_t> cell_index_;   // compact row -> BlockField flat index
