@@ -53,9 +53,10 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   if (std::abs(along - std::round(along)) > 1e-6 * along) {
     geometry.fail("length_m", fmt::format("must be a whole number of cells of {:.6g} m (it is {:.4f})", dx, along));
   }
-  if (c.self_induced_correction && c.particles.diameter_m > dx) {
+  if (c.self_induced_correction && c.particles.diameter_m > dx && !(c.smoothing_length_m > 0.0)) {
     coupling.fail("self_induced_correction", fmt::format("needs spheres no larger than a cell, but d_p = {:.4g} m > dx = {:.4g} m; "
-                                                         "use cells_across_diameter <= {}", c.particles.diameter_m, dx,
+                                                         "use cells_across_diameter <= {} or smooth the exchange "
+                                                         "(smoothing_length_m, about d_p)", c.particles.diameter_m, dx,
                                                          static_cast<int>(std::floor(c.diameter_m / c.particles.diameter_m))));
   }
   const double r = 0.5 * c.diameter_m;

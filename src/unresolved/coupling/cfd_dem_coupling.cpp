@@ -44,9 +44,8 @@ CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSetting
   if (settings_.suspension_viscosity != SuspensionViscosity::none && !settings_.void_fraction_feedback) {
     throw hs::common::ConfigError("coupling: a suspension viscosity needs the void-fraction feedback (it is a function of eps)");
   }
-  if (settings_.self_induced_correction && (!settings_.two_way || settings_.suspension_viscosity != SuspensionViscosity::none)) {
-    // One-way: nothing to correct. With a suspension viscosity the measured M (plasma viscosity) would be too large.
-    throw hs::common::ConfigError("coupling: the self-induced velocity correction needs two-way coupling and no suspension viscosity");
+  if (settings_.self_induced_correction && !settings_.two_way) {   // one-way: nothing to correct
+    throw hs::common::ConfigError("coupling: the self-induced velocity correction needs two-way coupling");
   }
   if (settings_.self_induced_correction && settings_.closure_frame != ClosureFrame::tube) {
     throw hs::common::ConfigError("coupling: the self-induced velocity correction is measured in a straight tube: it needs the tube frame");
@@ -69,16 +68,33 @@ const SelfMobility& CfdDemCoupling::self_mobility(double diameter_m) {
     if (std::abs(m.sphere_diameter_m() - diameter_m) <= 1e-9 * diameter_m) return m;
   }
   const double ratio = diameter_m / fluid_.grid().dx_m();
-  if (ratio > 1.0) {
+  if (ratio > 1.0 && !smoothing_) {
     throw hs::common::ConfigError(fmt::format(
         "coupling: the self-induced velocity correction needs spheres no larger than a cell, but d_p / dx = {:.3g} "
-        "(d_p = {:.4g} m, dx = {:.4g} m): use a coarser grid or switch the correction off (self_mobility.hpp)",
+        "(d_p = {:.4g} m, dx = {:.4g} m): use a coarser grid, smooth the exchange (smoothing_length_m) or switch the "
+        "correction off (self_mobility.hpp)",
         ratio, diameter_m, fluid_.grid().dx_m()));
   }
-  return self_mobility_.emplace_back(fluid_.grid(), fluid_.fluid(), fluid_.drive(),
-                                     TubeFrame{.axis = settings_.axis, .axis_point_m = settings_.axis_point_m,
-                                               .radius_m = settings_.tube_radius_m},
-                                     diameter_m, settings_.void_fraction_feedback ? settings_.eps_min : 0.0);
+  const SelfMobility& m = self_mobility_.emplace_back(
+      fluid_.grid(), fluid_.fluid(), fluid_.drive(),
+      TubeFrame{.axis = settings_.axis, .axis_point_m = settings_.axis_point_m, .radius_m = settings_.tube_radius_m},
+      diameter_m, settings_.void_fraction_feedback ? settings_.eps_min : 0.0, settings_.smoothing_length_m);
+  if (smoothing_) {
+    // The correction subtracts M F with F of the step before: it follows the fluid while the sphere's own disturbance
+    // stays below its Stokes velocity, beta M < 1 (without smoothing the runs with beta M = 1.2-4.6 ran away; with
+    // l = d_p / 2, 0.44-0.47 at 10-20 cells across D = 30 um, stable: sphere_in_tube_drag_test).
+    const double beta = 3.0 * std::numbers::pi * fluid_.fluid().density_kg_m3 * fluid_.fluid().kinematic_viscosity_m2_s * diameter_m;
+    double largest = 0.0;
+    for (const Vec3& v : m.mobility_m_s_N()) largest = std::max({largest, v[0], v[1], v[2]});
+    if (beta * largest >= 1.0) {
+      throw hs::common::ConfigError(fmt::format(
+          "coupling: with smoothing_length_m = {:.4g} m the self-induced velocity correction would move a sphere of "
+          "d_p = {:.4g} m by beta M = {:.3g} of its own Stokes velocity (allowed < 1): smooth over a longer length "
+          "(about d_p or more) or switch the correction off (self_mobility.hpp)",
+          settings_.smoothing_length_m, diameter_m, beta * largest));
+    }
+  }
+  return m;
 }
 
 CfdDemCoupling::LocalChannel CfdDemCoupling::local_channel(const Vec3& x) {
@@ -157,7 +173,12 @@ void CfdDemCoupling::particle_forces() {
       // What this sphere gave the fluid in the step just made: minus its drag impulse per time, minus its lift.
       const Vec3 j{p.drag_impulse_N_s()[0][i], p.drag_impulse_N_s()[1][i], p.drag_impulse_N_s()[2][i]};
       const Vec3 lift_before{lift_col[0][i], lift_col[1][i], lift_col[2][i]};
-      uf = uf - self_mobility(d).induced_velocity(x, -1.0 * (j / dt + lift_before));
+      // M is measured in plasma; a suspension viscosity mu_plasma f(eps) at the sphere scales it by 1 / f (a Stokes
+      // flow's response is inversely proportional to the viscosity, and the smoothed force sits within ~l of the
+      // sphere, where f is the local one: an approximation where f varies over l, e.g. at the cell-free layer).
+      const double factor = settings_.suspension_viscosity != SuspensionViscosity::none
+                                ? fluid_.viscosity_factor()[map_.cell(i, 0)] : 1.0;
+      uf = uf - (1.0 / factor) * self_mobility(d).induced_velocity(x, -1.0 * (j / dt + lift_before));
     }
     const auto grad = fluid_.velocity_gradient_at(x);
     if (settings_.fluid_torque) {

@@ -72,7 +72,8 @@ struct CouplingSettings {
   hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;
   // true: the closures get the undisturbed velocity estimate u_f - M F instead of the interpolated u_f, with F the
   // force each sphere gave the fluid in the last step (drag and lift) and M the grid's self-mobility measured on
-  // this tube (self_mobility.hpp). Two-way coupling only; needs tube_radius_m and spheres no larger than a cell.
+  // this tube (self_mobility.hpp), divided by the suspension viscosity's factor at the sphere. Two-way coupling only;
+  // needs tube_radius_m, and spheres no larger than a cell unless the exchange is smoothed.
   bool self_induced_correction = false;
   // The cells' stress as a local viscosity factor of the smoothed volume fraction (suspension_viscosity.hpp),
   // refreshed with eps; needs void_fraction_feedback.

@@ -46,9 +46,11 @@ class DiffusionSmoothing {
                        std::initializer_list<BlockField<hs::common::Vec3>*> vectors);
   static constexpr int kMaxColumns = 8;
   /// The direct factor's limit. A 3D grid's LDL^T fill grows about as rows^(4/3) (AMD on a periodic 7-point box:
-  /// 1.4 MB at 2000 rows, 12 MB at 8000, 54 MB and 3 s to factorise at 20000, where a field's two triangular
-  /// solves stream the whole factor and no longer beat ~45 CG iterations in cache by much); beyond it, CG.
-  static constexpr std::size_t kDirectMaxRows = 10000;
+  /// 1.4 MB at 2000 rows, 12 MB at 8000, 54 MB and 3 s to factorise at 20000); beyond it, CG. Was 10,000, where a
+  /// field's two triangular solves stream the whole factor and were expected to no longer beat CG by much; but in the
+  /// D = 30 um tube at 15 cells across (10,600 rows, l / dx 1.4) the CG smoothing took 134 ms of each step (68% of
+  /// it), so the factor is kept up to the 20-cells-across tube (~25,000 rows).
+  static constexpr std::size_t kDirectMaxRows = 40000;
   /// Whether smoothing uses the factor (false: CG).
   [[nodiscard]] bool direct() const { return factor_ != nullptr; }
 

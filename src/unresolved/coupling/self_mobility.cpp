@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "unresolved/coupling/diffusion_smoothing.hpp"
 #include "unresolved/coupling/divided_void_fraction.hpp"
 #include "unresolved/dem/particle_store.hpp"
 
@@ -16,6 +18,8 @@ namespace {
 
 using hs::common::Vec3;
 
+constexpr double kMaxViscousNumber = 4.0;
+
 Vec3 unit(int axis) {
   Vec3 e{};
   e[axis] = 1.0;
@@ -23,12 +27,16 @@ Vec3 unit(int axis) {
 }
 
 /// Steady velocity at x (m/s) when a sphere of diameter d at x gives the fluid at rest the force F (N) through its
-/// 29 markers, as CfdDemCoupling::exchange_drag spreads the drag.
+/// 29 markers, as CfdDemCoupling::exchange_drag spreads the drag (then smoothed as the run smooths it, if it does).
 Vec3 steady_response(const FvmGrid& grid, const FluidProperties& fluid, const FlowDrive& drive, double length_scale_m,
-                     const Vec3& x, double diameter_m, double eps_min, const Vec3& force_N) {
+                     const Vec3& x, double diameter_m, double eps_min, DiffusionSmoothing* smoothing,
+                     const Vec3& force_N) {
   // Implicit Euler with dt = R^2 / nu damps the slowest (tube) mode ~7x per step; the steady state of the linear
-  // problem does not depend on dt.
-  const double dt = length_scale_m * length_scale_m / fluid.kinematic_viscosity_m2_s;
+  // problem does not depend on dt. But the PISO steps stop converging at large viscous numbers nu dt / dx^2 (15 cells
+  // across D = 30 um, sphere on the axis: at 56 and 25 the response grows ~2x every 10 steps, at 10 it settles in ~50
+  // steps, at 4 in ~20; 10 cells across settle at 25), so dt is capped at viscous number 4.
+  const double nu = fluid.kinematic_viscosity_m2_s;
+  const double dt = std::min(length_scale_m * length_scale_m / nu, kMaxViscousNumber * grid.dx_m() * grid.dx_m() / nu);
   FvmSolver solver(grid, fluid, {.dt_s = dt, .max_courant = 1e30, .pressure = {.tolerance = 1e-12, .rel_tol = 0.0},
                                  .momentum_tolerance = 1e-12},
                    drive, MPI_COMM_SELF);
@@ -37,7 +45,13 @@ Vec3 steady_response(const FvmGrid& grid, const FluidProperties& fluid, const Fl
   DividedMap map(grid);
   map.locate(sphere);
   if (eps_min > 0.0) {   // the run's void-fraction feedback: the sphere's own eps roughly doubles M at d_p / dx ~ 2
-    (void)map.void_fraction(sphere, eps_min, solver.void_fraction());
+    BlockField<double>& eps = solver.void_fraction();
+    (void)map.void_fraction(sphere, eps_min, eps);
+    if (smoothing != nullptr) {   // as CfdDemCoupling::fill_fields: the solid fraction is smoothed
+      for (double& e : eps.data()) e = 1.0 - e;
+      smoothing->smooth(eps);
+      for (double& e : eps.data()) e = 1.0 - e;
+    }
     solver.coupling_fields_changed();
   }
   BlockField<Vec3>& f = solver.explicit_force_density_N_m3();
@@ -45,6 +59,7 @@ Vec3 steady_response(const FvmGrid& grid, const FluidProperties& fluid, const Fl
     const std::size_t c = map.cell(0, m);
     f[c] += force_N / (kMarkersPerSphere * map.fluid_volume_m3(c));
   }
+  if (smoothing != nullptr) smoothing->smooth(f);
   fill_cell_field_ghosts(grid, f);
   Vec3 u{};
   for (int step = 0; step < 200; ++step) {
@@ -61,7 +76,7 @@ Vec3 steady_response(const FvmGrid& grid, const FluidProperties& fluid, const Fl
 }  // namespace
 
 SelfMobility::SelfMobility(const FvmGrid& grid, const FluidProperties& fluid, const FlowDrive& drive, const TubeFrame& frame,
-                           double sphere_diameter_m, double eps_min, int stations)
+                           double sphere_diameter_m, double eps_min, double smoothing_length_m, int stations)
     : frame_(frame), diameter_m_(sphere_diameter_m) {
   const double reach = frame.radius_m - 0.5 * sphere_diameter_m;
   if (!(reach > 0.0) || stations < 2) {
@@ -78,6 +93,8 @@ SelfMobility::SelfMobility(const FvmGrid& grid, const FluidProperties& fluid, co
   const double lo = grid.origin_m()[frame.axis];
   const int n_axial = grid.cells()[static_cast<std::size_t>(frame.axis)];
   const double along = lo + (std::floor(0.5 * n_axial) + 0.5) * dx;
+  std::unique_ptr<DiffusionSmoothing> smoothing;
+  if (smoothing_length_m > 0.0) smoothing = std::make_unique<DiffusionSmoothing>(grid, smoothing_length_m);
   const double force = 1e-12;   // N: Reynolds number of the disturbance ~1e-4 in plasma at dx ~ 3 um
   for (int k = 0; k < stations; ++k) {
     const double rho = reach * k / (stations - 1);
@@ -88,7 +105,8 @@ SelfMobility::SelfMobility(const FvmGrid& grid, const FluidProperties& fluid, co
     const std::array<int, 3> dirs{frame.axis, ray, azimuth};
     for (std::size_t d = 0; d < 3; ++d) {
       const Vec3 e = unit(dirs[d]);
-      m[static_cast<int>(d)] = dot(steady_response(grid, fluid, rest, frame.radius_m, x, sphere_diameter_m, eps_min, force * e), e) / force;
+      m[static_cast<int>(d)] = dot(steady_response(grid, fluid, rest, frame.radius_m, x, sphere_diameter_m, eps_min,
+                                             smoothing.get(), force * e), e) / force;
     }
     rho_.push_back(rho);
     m_.push_back(m);

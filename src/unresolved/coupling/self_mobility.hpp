@@ -22,11 +22,15 @@ struct TubeFrame {
 /// larger than a cell the disturbance exceeds the sphere's own velocity (a force spread over the sphere's volume
 /// moves its centre at 1.5 times the Stokes velocity), so no per-step closed form applies; instead the coupling
 /// subtracts M F, with F the force the sphere gave the fluid in the last step and M this measured response.
-/// The correction is for spheres smaller than a cell (point particles), where it works (sphere pulled along a tube,
-/// sphere_in_tube_drag_test, beta = 3 pi mu d_p): d_p / dx = 0.56, beta M = 0.1-0.5, drag law within 1.1%; d_p / dx
-/// = 0.94, beta M = 1.7 on the axis, over-corrected by 13%; d_p / dx = 1.9, where the sphere's own void fraction
-/// dominates its cells (beta M = 1.2-4.6), the sphere and the fluid it drags run away together. The coupling
-/// therefore refuses d_p > dx.
+/// Without smoothing the correction is for spheres smaller than a cell (point particles), where it works (sphere
+/// pulled along a tube, sphere_in_tube_drag_test, beta = 3 pi mu d_p): d_p / dx = 0.56, beta M = 0.1-0.5, drag law
+/// within 1.1%; d_p / dx = 0.94, beta M = 1.7 on the axis, over-corrected by 13%; d_p / dx = 1.9, where the sphere's
+/// own void fraction dominates its cells (beta M = 1.2-4.6), the sphere and the fluid it drags run away together.
+/// With the exchange smoothed over a length l (diffusion_smoothing.hpp) the force reaches the fluid over l, not over
+/// the cells the markers fall in, M is measured with the same smoothing, and it no longer depends on d_p / dx but
+/// on l / d_p (continuum limit M = 1 / (6 pi mu l) for a point force smoothed by the kernel exp(-r/l) / (4 pi l^2 r)
+/// in unbounded fluid): the coupling then allows any grid and refuses only a beta M that the lagged correction cannot
+/// follow (CfdDemCoupling::self_mobility).
 ///
 /// M is measured once on the run's own grid, drive and marker map (DividedMap): for a sphere at a few radial
 /// stations from the axis to R - d/2, a force along the axis, along the radius and along the azimuth is spread over
@@ -42,9 +46,10 @@ class SelfMobility {
  public:
   /// Measures the table; `drive` gives the mode of the run's flow drive (its target value is set to zero: the
   /// response is linear), `fluid` the run's plasma. eps_min > 0: the sphere's own void fraction (clipped there) is
-  /// in the fluid, as in a run with void-fraction feedback; 0: eps = 1.
+  /// in the fluid, as in a run with void-fraction feedback; 0: eps = 1. smoothing_length_m > 0: the force and the
+  /// solid fraction are smoothed over that length, as the coupling smooths them.
   SelfMobility(const FvmGrid& grid, const FluidProperties& fluid, const FlowDrive& drive, const TubeFrame& frame,
-               double sphere_diameter_m, double eps_min, int stations = 8);
+               double sphere_diameter_m, double eps_min, double smoothing_length_m = 0.0, int stations = 8);
 
   /// Velocity the force F (N, on the fluid) of a sphere at x induces at x itself, m/s.
   [[nodiscard]] hs::common::Vec3 induced_velocity(const hs::common::Vec3& x_m, const hs::common::Vec3& force_N) const;

@@ -236,6 +236,28 @@ TEST(SphereInTube, SmoothingOverTheSphereSizeLowersTheSelfDisturbanceButDoesNotR
   EXPECT_GT(full.fluid_ratio, 0.03);
 }
 
+TEST(SphereInTube, SmoothedSelfInducedCorrectionRestoresTheDragLawOnCoarseAndFineGrids) {
+  // With the exchange smoothed over l = d_p, M is measured with the same smoothing and the corrected two-way drag is
+  // the Haberman-Sayre law again on grids where the unsmoothed correction is refused (d_p / dx 1.88 and 2.82; without
+  // the correction 0.840 and 0.794 of the law, test above and docs/closures.md). Band 3%: issue 7's drag-law band, as
+  // for the point-particle correction above. Measured: 0.992 at 10 cells, 0.984 at 15, 0.998 at 20 (and at l = d_p / 2:
+  // 0.970, 0.937, 0.973: the +-30% variation of M with the sphere's place in a cell is not yet smoothed away there).
+  const double d = default_particle_params().diameter_m;
+  for (const int cells : {10, 15}) {
+    const DragRun run = drag_on_axis(30e-6, true, true, cells, 1.0, d);
+    EXPECT_NEAR(run.force_ratio, 1.0, 0.03) << cells << " cells across";
+    EXPECT_NEAR(run.velocity_m_s, 1e-4, 0.03 * 1e-4) << cells << " cells across";
+    EXPECT_LT(std::abs(run.fluid_ratio), 0.03) << cells << " cells across";   // the undisturbed estimate: 0 here
+  }
+}
+
+TEST(SphereInTube, SmoothedSelfInducedCorrectionRefusesALengthTooShortForTheSphere) {
+  // l = d_p / 8 (0.7 um, a quarter of a cell at 10 cells across) barely spreads the force: beta M is about the
+  // unsmoothed 1.2-4.6, where the lagged correction runs away; the coupling refuses it (beta M >= 1).
+  const double d = default_particle_params().diameter_m;
+  EXPECT_THROW((void)drag_on_axis(30e-6, true, true, 10, 1.0, d / 8.0), hs::common::ConfigError);
+}
+
 TEST(SphereInTube, SmoothingKeepsTheSelfDisturbanceBoundedOnAFinerGrid) {
   // D = 30 um, 15 cells across (d_p / dx = 2.8): without smoothing the sphere and the fluid it drags run away together
   // (measured U = -23 U0, u_f / U = 0.99 after 50 steps); with l = d_p the sphere's footprint is the physical length,
