@@ -78,6 +78,8 @@ CouplingModel parse_coupling_model(hs::common::ConfigSection& coupling, const st
   }
   // The fields' smoothing length (diffusion_smoothing.hpp); up to 1 mm, far beyond any cell-scale footprint.
   m.smoothing_length_m = coupling.number_in_or("smoothing_length_m", 0.0, 1e-3, 0.0);
+  // "centre" (default, every committed result) or "footprint" (CouplingSettings::buoyancy_over_footprint).
+  m.buoyancy_over_footprint = coupling.one_of_or("generalised_buoyancy", {"centre", "footprint"}, "centre") == "footprint";
   return m;
 }
 
@@ -98,6 +100,7 @@ void write_model_summary(const CouplingModel& m, nlohmann::json& j) {
   j["self_induced_correction"] = m.self_induced_correction;
   j["suspension_viscosity"] = suspension_viscosity_name(m.suspension_viscosity);
   if (m.smoothing_length_m > 0.0) j["smoothing_length_m"] = m.smoothing_length_m;   // absent: none (old fingerprints hold)
+  if (m.buoyancy_over_footprint) j["generalised_buoyancy"] = "footprint";            // absent: centre
 }
 
 }  // namespace hs::unresolved

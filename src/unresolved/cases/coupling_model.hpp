@@ -22,6 +22,7 @@ struct CouplingModel {
   bool self_induced_correction = false;  // closures get u_f - M F (CouplingSettings::self_induced_correction)
   SuspensionViscosity suspension_viscosity = SuspensionViscosity::none;   // the cells' stress (suspension_viscosity.hpp)
   double smoothing_length_m = 0.0;       // CouplingSettings::smoothing_length_m (0: none)
+  bool buoyancy_over_footprint = false;  // generalised_buoyancy = "footprint" (CouplingSettings)
 };
 
 /// Closure spec from one string: a registered name ("stokes", "schiller_naumann", "saffman_mei", "none") or a

@@ -142,7 +142,8 @@ CfdDemSetup open_geometry_setup(const OpenGeometryConfig& c) {
           .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.model.void_fraction_rate,
                        .closure_frame = ClosureFrame::channel, .wall_correction = c.model.wall_correction,
                        .suspension_viscosity = c.model.suspension_viscosity,
-                       .smoothing_length_m = c.model.smoothing_length_m},
+                       .smoothing_length_m = c.model.smoothing_length_m,
+                       .buoyancy_over_footprint = c.model.buoyancy_over_footprint},
           .closures = make_closures(c.model)};
 }
 

@@ -39,6 +39,7 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   c.self_induced_correction = model.self_induced_correction;
   c.suspension_viscosity = model.suspension_viscosity;
   c.smoothing_length_m = model.smoothing_length_m;
+  c.buoyancy_over_footprint = model.buoyancy_over_footprint;
   c.cells_across = static_cast<int>(numerics.integer_in("cells_across_diameter", 4, 1000));
   c.dt_s = numerics.positive("dt_s");
   c.pressure_coupling =

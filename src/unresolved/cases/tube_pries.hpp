@@ -40,6 +40,7 @@ struct TubePriesConfig {
   bool self_induced_correction = false;  // closures get u_f - M F (CouplingSettings::self_induced_correction)
   SuspensionViscosity suspension_viscosity = SuspensionViscosity::none;   // the cells' stress (suspension_viscosity.hpp)
   double smoothing_length_m = 0.0;       // the coupling fields' smoothing length (CouplingSettings), m; 0: none
+  bool buoyancy_over_footprint = false;  // CouplingSettings::buoyancy_over_footprint
   double checkpoint_every_wall_s = 600.0;   // wall-clock interval between restart files (and one at the end)
   std::uint64_t seed = 1;
 
@@ -47,7 +48,8 @@ struct TubePriesConfig {
   [[nodiscard]] CouplingModel coupling_model() const {
     return {.void_fraction_rate = void_fraction_rate, .drag = drag, .lift = lift, .deformation = deformation,
             .wall_correction = wall_correction, .self_induced_correction = self_induced_correction,
-            .suspension_viscosity = suspension_viscosity, .smoothing_length_m = smoothing_length_m};
+            .suspension_viscosity = suspension_viscosity, .smoothing_length_m = smoothing_length_m,
+            .buoyancy_over_footprint = buoyancy_over_footprint};
   }
 };
 

@@ -83,7 +83,7 @@ CfdDemSetup tube_pries_setup(const TubePriesConfig& c) {
           .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0},
                        .tube_radius_m = r, .wall_correction = c.wall_correction,
                        .self_induced_correction = c.self_induced_correction, .suspension_viscosity = c.suspension_viscosity,
-                       .smoothing_length_m = c.smoothing_length_m},
+                       .smoothing_length_m = c.smoothing_length_m, .buoyancy_over_footprint = c.buoyancy_over_footprint},
           .closures = make_closures(c.coupling_model())};
 }
 

@@ -160,6 +160,7 @@ void CfdDemCoupling::particle_forces() {
   if (correct) {
     for (std::size_t i = 0; i < n; ++i) (void)self_mobility(2.0 * p.radius_m()[i]);
   }
+  if (settings_.buoyancy_over_footprint) fill_buoyancy_density();
   // A bad drag coefficient is reported for the first particle that had one, after the loop (an exception must not
   // leave an OpenMP region).
   std::size_t bad = n;
@@ -209,8 +210,14 @@ void CfdDemCoupling::particle_forces() {
     }
     Vec3 f{};
     Vec3 lift{};
-    if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
-    if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
+    if (settings_.buoyancy_over_footprint) {
+      Vec3 mean{};
+      for (int m = 0; m < kMarkersPerSphere; ++m) mean += buoyancy_density_[map_.cell(i, m)];
+      f = f + (vp / kMarkersPerSphere) * mean;
+    } else {
+      if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
+      if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
+    }
     if (closures_.lift) {
       // A C_l fitted on the fluid velocity (the resolved RBC dataset) takes that velocity and its Re_p.
       const bool flow = closures_.lift->reference_velocity() == hs::closures::LiftVelocity::flow;
@@ -236,6 +243,29 @@ void CfdDemCoupling::particle_forces() {
       lift_reaction_N_[c] -= Vec3{lift_col[0][i], lift_col[1][i], lift_col[2][i]} / kMarkersPerSphere;
     });
   }
+}
+
+void CfdDemCoupling::fill_buoyancy_density() {
+  const FvmGrid& grid = fluid_.grid();
+  const auto& nc = grid.cells();
+  if (buoyancy_density_.data().empty()) buoyancy_density_ = BlockField<Vec3>(nc, Vec3{});
+  buoyancy_density_.fill(Vec3{});
+  for (int k = 0; k < nc[2]; ++k) {
+    for (int j = 0; j < nc[1]; ++j) {
+      for (int i = 0; i < nc[0]; ++i) {
+        const std::size_t c = buoyancy_density_.index(i, j, k);
+        if (grid.fluid_fractions()[c] <= 0.0) continue;
+        const Vec3 x = grid.cell_centre_m(i, j, k);
+        Vec3 q{};
+        if (settings_.pressure_force) q = q - fluid_.pressure_gradient_at(x);
+        if (settings_.viscous_force) q = q + fluid_.viscous_force_density_at(x);
+        buoyancy_density_[c] = q;
+      }
+    }
+  }
+  // The smoothing is self-adjoint in the fluid-volume inner product, so averaging the smoothed field over a sphere's
+  // markers is the transpose of smoothing the volume its markers deposit: the same footprint both ways.
+  if (smoothing_) smoothing_->smooth(buoyancy_density_);
 }
 
 void CfdDemCoupling::fill_fields() {

@@ -82,6 +82,12 @@ struct CouplingSettings {
   // smoothed over this length, m (diffusion_smoothing.hpp), so the particles' footprint is a physical length and
   // not the grid's cell (issue #25). 0: each field stays on the cells the divided markers fall in.
   double smoothing_length_m = 0.0;
+  // Where the generalised buoyancy V_p (-grad p + div tau) is taken. false ("centre"): sampled at the sphere's centre.
+  // true ("footprint"): the fluid's force density at the cell centres, smoothed as the solid fraction is, averaged over
+  // the sphere's 29 markers' cells: the adjoint of how the sphere's volume reaches eps, so that the spheres together
+  // receive exactly sum_c (1 - eps_c) V_c (-grad p + div tau)_c and the mixture's momentum closes (the centre value
+  // contains each sphere's own reaction peaked there; docs/cfd-dem.md).
+  bool buoyancy_over_footprint = false;
 };
 
 /// Closures by role; drag is required, lift and deformation may be null (no lift, DI = 0).
@@ -171,6 +177,8 @@ class CfdDemCoupling {
                                                     const LocalChannel& channel) const;
   /// The self-mobility table for spheres of this diameter, measured on first use; ConfigError for d_p > dx.
   [[nodiscard]] const SelfMobility& self_mobility(double diameter_m);
+  /// buoyancy_density_ from the fluid's present pressure and stress (CouplingSettings::buoyancy_over_footprint).
+  void fill_buoyancy_density();
 
   FvmSolver& fluid_;
   DemSystem& dem_;
@@ -187,7 +195,8 @@ class CfdDemCoupling {
   DragLimitedStep last_drag_limited_;
   std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
   std::unique_ptr<ChannelFrame> channel_;       // the channel frame's memo (closure_frame = channel)
-  std::unique_ptr<DiffusionSmoothing> smoothing_;   // smoothing_length_m > 0
+  std::unique_ptr<DiffusionSmoothing> smoothing_;
+  BlockField<hs::common::Vec3> buoyancy_density_;   // buoyancy_over_footprint: -grad p + div tau at cell centres, N/m^3   // smoothing_length_m > 0
 };
 
 }  // namespace hs::unresolved
