@@ -124,6 +124,20 @@ double DividedMap::void_fraction(const ParticleStore& particles, double eps_min,
     const double r = particles.radius_m()[k / kMarkersPerSphere];
     solid[c] += 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
   });
+  const BlockField<double>& ff = grid_.fluid_fractions();
+  const auto& n = grid_.cells();
+  for (int k = 0; k < n[2]; ++k) {
+    for (int j = 0; j < n[1]; ++j) {
+      for (int i = 0; i < n[0]; ++i) {
+        const std::size_t c = ff.index(i, j, k);
+        if (ff[c] > 0.0) eps[c] = 1.0 - solid[c] / fluid_volume_m3(c);
+      }
+    }
+  }
+  return clip_void_fraction(eps_min, eps);
+}
+
+double DividedMap::clip_void_fraction(double eps_min, BlockField<double>& eps) const {
   double lost_m3 = 0.0;
   const BlockField<double>& ff = grid_.fluid_fractions();
   const auto& n = grid_.cells();
@@ -135,10 +149,8 @@ double DividedMap::void_fraction(const ParticleStore& particles, double eps_min,
           eps[c] = 1.0;
           continue;
         }
-        const double v_fluid = fluid_volume_m3(c);
-        const double e = 1.0 - solid[c] / v_fluid;
-        if (e < eps_min) lost_m3 += (eps_min - e) * v_fluid;
-        eps[c] = std::max(e, eps_min);
+        if (eps[c] < eps_min) lost_m3 += (eps_min - eps[c]) * fluid_volume_m3(c);
+        eps[c] = std::max(eps[c], eps_min);
       }
     }
   }

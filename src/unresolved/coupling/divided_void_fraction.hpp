@@ -53,6 +53,9 @@ class DividedMap {
   /// eps = 1 - (solid volume in the cell) / (fluid volume of the cell), clipped at eps_min. Returns the solid
   /// volume dropped by the clipping, m^3 (zero when nothing was clipped; CFDEM only counts it, so do we).
   double void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps) const;
+  /// Clips eps at eps_min in the fluid cells (1 in the others); returns the solid volume dropped, m^3. With
+  /// eps_min = -infinity void_fraction() leaves eps unclipped, so a smoothed field can be clipped after smoothing.
+  double clip_void_fraction(double eps_min, BlockField<double>& eps) const;
   /// Fluid volume of a cell (fluid fraction x dx^3), m^3.
   [[nodiscard]] double fluid_volume_m3(std::size_t cell) const { return grid_.fluid_fractions()[cell] * cell_volume_m3_; }
 
