@@ -124,15 +124,10 @@ double DividedMap::void_fraction(const ParticleStore& particles, double eps_min,
     const double r = particles.radius_m()[k / kMarkersPerSphere];
     solid[c] += 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
   });
-  const BlockField<double>& ff = grid_.fluid_fractions();
-  const auto& n = grid_.cells();
-  for (int k = 0; k < n[2]; ++k) {
-    for (int j = 0; j < n[1]; ++j) {
-      for (int i = 0; i < n[0]; ++i) {
-        const std::size_t c = ff.index(i, j, k);
-        if (ff[c] > 0.0) eps[c] = 1.0 - solid[c] / fluid_volume_m3(c);
-      }
-    }
+  // Every stored cell (ghosts too: the solver refills them before use); the clip below walks the interior.
+  const std::vector<double>& ff = grid_.fluid_fractions().data();
+  for (std::size_t c = 0; c < ff.size(); ++c) {
+    if (ff[c] > 0.0) eps[c] = 1.0 - solid[c] / fluid_volume_m3(c);
   }
   return clip_void_fraction(eps_min, eps);
 }
