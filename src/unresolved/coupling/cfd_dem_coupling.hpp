@@ -195,8 +195,8 @@ class CfdDemCoupling {
   DragLimitedStep last_drag_limited_;
   std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
   std::unique_ptr<ChannelFrame> channel_;       // the channel frame's memo (closure_frame = channel)
-  std::unique_ptr<DiffusionSmoothing> smoothing_;
-  BlockField<hs::common::Vec3> buoyancy_density_;   // buoyancy_over_footprint: -grad p + div tau at cell centres, N/m^3   // smoothing_length_m > 0
+  std::unique_ptr<DiffusionSmoothing> smoothing_;   // smoothing_length_m > 0
+  BlockField<hs::common::Vec3> buoyancy_density_;   // buoyancy_over_footprint: -grad p + div tau at cell centres, N/m^3
 };
 
 }  // namespace hs::unresolved

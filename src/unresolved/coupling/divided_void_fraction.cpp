@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include "common/errors.hpp"
+#include "unresolved/coupling/diffusion_smoothing.hpp"
 
 namespace hs::unresolved {
 namespace {
@@ -118,7 +119,8 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
   }
 }
 
-double DividedMap::void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps) const {
+double DividedMap::void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps,
+                                 DiffusionSmoothing* smoothing) const {
   BlockField<double> solid(grid_.cells(), 0.0);
   for_each_cell([&](std::size_t c, std::size_t k) {
     const double r = particles.radius_m()[k / kMarkersPerSphere];
@@ -127,7 +129,11 @@ double DividedMap::void_fraction(const ParticleStore& particles, double eps_min,
   // Every stored cell (ghosts too: the solver refills them before use); the clip below walks the interior.
   const std::vector<double>& ff = grid_.fluid_fractions().data();
   for (std::size_t c = 0; c < ff.size(); ++c) {
-    if (ff[c] > 0.0) eps[c] = 1.0 - solid[c] / fluid_volume_m3(c);
+    if (ff[c] > 0.0) solid[c] /= fluid_volume_m3(c);
+  }
+  if (smoothing != nullptr) smoothing->smooth(solid);   // conserved: what the particles put on the grid stays there
+  for (std::size_t c = 0; c < ff.size(); ++c) {
+    if (ff[c] > 0.0) eps[c] = 1.0 - solid[c];
   }
   return clip_void_fraction(eps_min, eps);
 }

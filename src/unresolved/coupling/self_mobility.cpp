@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <memory>
 
 #include <fmt/format.h>
@@ -47,15 +46,7 @@ Vec3 steady_response(const FvmGrid& grid, const FluidProperties& fluid, const Fl
   map.locate(sphere);
   if (eps_min > 0.0) {   // the run's void-fraction feedback: the sphere's own eps roughly doubles M at d_p / dx ~ 2
     BlockField<double>& eps = solver.void_fraction();
-    if (smoothing != nullptr) {   // as CfdDemCoupling::fill_fields: the solid fraction is smoothed, then clipped
-      (void)map.void_fraction(sphere, -std::numeric_limits<double>::infinity(), eps);
-      for (double& e : eps.data()) e = 1.0 - e;
-      smoothing->smooth(eps);
-      for (double& e : eps.data()) e = 1.0 - e;
-      (void)map.clip_void_fraction(eps_min, eps);
-    } else {
-      (void)map.void_fraction(sphere, eps_min, eps);
-    }
+    (void)map.void_fraction(sphere, eps_min, eps, smoothing);   // as CfdDemCoupling::fill_fields
     solver.coupling_fields_changed();
   }
   BlockField<Vec3>& f = solver.explicit_force_density_N_m3();
