@@ -136,6 +136,7 @@ std::string fingerprint(const TubePriesConfig& c, bool quick) {
   }
   j["tube"] = {c.diameter_m, c.length_m, c.tube_hematocrit, c.cells_across, c.dt_s, c.n_coupling, c.end_time_s,
                c.seed, c.steady_tolerance, c.average_from_fraction, quick};
+  j["piso_correctors"] = c.piso_correctors;
   return j.dump();
 }
 

@@ -18,6 +18,7 @@
 #include "unresolved/cases/bifurcation_study.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/coupling_model.hpp"
+#include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/cases/stenosis_study.hpp"
 #include "unresolved/dem/particle_params.hpp"
 
@@ -34,7 +35,7 @@ struct OpenGeometryConfig {
   CouplingModel model{};
   double dx_m = 0.0;
   double dt_s = 0.0;
-  int piso_correctors = 4;                               // see loop_numerics.hpp
+  int piso_correctors = kCfdDemPisoCorrectors;           // loop_numerics.hpp
   PressureCoupling pressure_coupling = PressureCoupling::piso;
   int n_coupling = 1;
   double end_time_s = 0.0;

@@ -15,6 +15,7 @@
 #include "common/config/config_file.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/coupling_model.hpp"
+#include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/cases/open_geometry.hpp"
 #include "unresolved/dem/particle_params.hpp"
 
@@ -31,7 +32,7 @@ struct TubeOpenConfig {
   CouplingModel model{};
   int cells_across = 10;
   double dt_s = 0.0;
-  int piso_correctors = 4;               // see loop_numerics.hpp
+  int piso_correctors = kCfdDemPisoCorrectors;   // loop_numerics.hpp
   PressureCoupling pressure_coupling = PressureCoupling::piso;
   int n_coupling = 1;
   double end_time_s = 0.0;

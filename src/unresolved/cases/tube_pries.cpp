@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "common/fluid_properties.hpp"
+#include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/cases/step_limits.hpp"
 
 namespace hs::unresolved {
@@ -44,6 +45,7 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   c.dt_s = numerics.positive("dt_s");
   c.pressure_coupling =
       pressure_coupling_from_name(numerics.one_of_or("pressure_coupling", {"piso", "projection"}, "piso"));
+  c.piso_correctors = read_piso_correctors(numerics);
   c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
   c.end_time_s = numerics.positive("end_time_s");
   c.average_from_fraction = numerics.number_in_or("average_from_fraction", 0.0, 0.95, 0.5);

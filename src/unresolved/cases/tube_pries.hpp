@@ -13,6 +13,7 @@
 #include "closures/wall_correction.hpp"
 #include "common/case_request.hpp"
 #include "unresolved/cases/coupling_model.hpp"
+#include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/coupling/suspension_viscosity.hpp"
 #include "unresolved/dem/particle_params.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
@@ -30,6 +31,7 @@ struct TubePriesConfig {
   double dt_s = 0.0;                     // CFD step
   double vtk_every_s = 0.0;              // [output] vtk_every_s; 0: only the final frame
   PressureCoupling pressure_coupling = PressureCoupling::piso;   // [numerics] pressure_coupling
+  int piso_correctors = kCfdDemPisoCorrectors;   // [numerics] piso_correctors (loop_numerics.hpp)
   int n_coupling = 1;                    // DEM steps per CFD step
   double end_time_s = 0.0;
   double average_from_fraction = 0.5;    // Ht_d and Q are averaged over the last (1 - this) of the run

@@ -77,7 +77,7 @@ CfdDemSetup tube_pries_setup(const TubePriesConfig& c) {
                                                                             .radius_m = r}),
           .grid = {.box_m = box, .dx_m = c.diameter_m / c.cells_across, .sides = sides},
           .fluid = c.fluid,
-          .piso = {.dt_s = c.dt_s, .coupling = c.pressure_coupling},
+          .piso = {.dt_s = c.dt_s, .correctors = c.piso_correctors, .coupling = c.pressure_coupling},
           .drive = drive_of(c),
           .dem = {.params = c.particles, .domain = {.box = box, .periodic = {false, false, true}}, .time_step_s = c.dt_s / c.n_coupling},
           .coupling = {.n_coupling = c.n_coupling, .void_fraction_rate = c.void_fraction_rate, .axis = 2, .axis_point_m = {0, 0, 0},
@@ -92,7 +92,8 @@ std::vector<std::string> TubePriesMeasurement::columns() const {
 }
 
 void TubePriesMeasurement::prepare(CfdDemSolvers& run) {
-  FvmSolver plasma(run.grid(), c_.fluid, {.dt_s = c_.dt_s, .coupling = c_.pressure_coupling}, drive_of(c_));
+  FvmSolver plasma(run.grid(), c_.fluid, {.dt_s = c_.dt_s, .correctors = c_.piso_correctors, .coupling = c_.pressure_coupling},
+                  drive_of(c_));
   const long steps = steps_of(c_);
   for (long s = 0; s < steps; ++s) plasma.step();
   q_plasma_m3_s_ = plasma.flow_rate_m3_s(2);
@@ -160,6 +161,7 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
   res["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
   write_model_summary(c_.coupling_model(), num);
   num["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
+  num["piso_correctors"] = c_.piso_correctors;
   j["groups"] = {{"channel_reynolds", hs::common::channel_reynolds(c_.fluid.density_kg_m3, c_.diameter_m, 2.0 * u_blood, mu)},
                  {"wall_gamma_plus", hs::common::shear_rate_plus(wall_shear_rate, r_tube, c_.fluid.kinematic_viscosity_m2_s)},
                  {"confinement_d_over_D", c_.particles.diameter_m / c_.diameter_m}};
