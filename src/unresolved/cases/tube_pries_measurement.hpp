@@ -25,7 +25,7 @@ class TubePriesMeasurement final : public CfdDemMeasurement {
 
   [[nodiscard]] std::string case_type() const override { return "tube-pries"; }
   [[nodiscard]] std::vector<std::string> columns() const override;
-  /// Q_plasma: the same grid and pressure gradient without cells, run to the same end time.
+  /// Q_plasma: the same grid and pressure gradient without cells, run to its steady state (at most the same end time).
   void prepare(CfdDemSolvers& run) override;
   /// Cells at Ht_c, at rest, in fluid at rest; u_r+'s mean velocity from Q_plasma.
   void start(CfdDemSolvers& run) override;
