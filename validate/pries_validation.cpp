@@ -108,7 +108,7 @@ TubePriesConfig config_for(double diameter_um, double hematocrit, bool quick, co
   c.suspension_viscosity = viscosity;
   // The coupling of issue #25's grid study (validate/results/2026-12-03_piso4_grid), each part on numerical grounds,
   // none on Pries: the exchange smoothed over one sphere diameter (CFDEMcoupling's diffusion smoothing; D = 30 um,
-  // Ht_c 0.10, seed means: Ht_d and mu_rel move +2.2 % and -1.0 % from 10 to 15 cells across, +3.9 % / -2.4 % at d_p / 2),
+  // Ht_c 0.10, seed means: Ht_d and mu_rel move +2.0 % and -1.0 % from 10 to 15 cells across, +3.9 % / -2.4 % at d_p / 2),
   // so the footprint is physical, not the grid's; the closures fed the undisturbed velocity (a pulled sphere's drag
   // within 0.2-1.6 % of Haberman-Sayre on 10-20 cells across); the generalised buoyancy over the footprint (the
   // fluid's solid share to round-off, so the mixture's momentum closes); PISO with 4 correctors (the default).
