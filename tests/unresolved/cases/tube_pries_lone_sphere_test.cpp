@@ -36,8 +36,8 @@ TubePriesConfig fine_tube() {
   c.drag = closure_spec_from("schiller_naumann");
   c.lift = closure_spec_from("none");
   c.deformation = closure_spec_from("none");
-  c.self_induced_correction = true;     // the validated model's coupling: corrected drag, smoothed exchange, footprint
-  c.smoothing_length_m = 2.82e-6;
+  c.self_induced_correction = true;     // the grid study's coupling: corrected drag, smoothed exchange, footprint;
+  c.smoothing_length_m = 2.82e-6;       // l = d_p / 2, the shorter of its two lengths (the footprint closest to a cell)
   c.buoyancy_over_footprint = true;
   return c;
 }
