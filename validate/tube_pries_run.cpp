@@ -31,10 +31,15 @@ int run_tube_pries(const hs::common::CaseRequest& request) {
   log.info("tube-pries: D = {:.4g} m, L = {:.4g} m, Ht_c = {:.3g}, {} cells across, dt = {:.4g} s, n_coupling = {}, wall correction {}",
            c.diameter_m, c.length_m, c.tube_hematocrit, c.cells_across, c.dt_s, c.n_coupling,
            hs::closures::wall_correction_name(c.wall_correction));
+  if (c.max_end_time_s > c.end_time_s) {
+    log.info("tube-pries: {:.4g} s, then on until Ht_d and mu_rel are steady (trends within {:.3g} % over the averaging "
+             "window at two checks {:.4g} s apart), at most {:.4g} s", c.end_time_s, 100.0 * c.steady_tolerance,
+             static_cast<double>(std::max(1L, min_steps_of(c) / 10)) * c.dt_s, c.max_end_time_s);
+  }
   CfdDemSolvers run(tube_pries_setup(c));
   TubePriesMeasurement m(c);
   const CfdDemOutcome out = run_cfd_dem_in_folder(ctx, run, m,
-                                                  {.steps = std::max(1L, std::lround(c.end_time_s / c.dt_s)),
+                                                  {.steps = max_steps_of(c),
                                                    .checkpoint_every_wall_s = c.checkpoint_every_wall_s,
                                                    .vtk_every_s = c.vtk_every_s});
   TubePriesResult r = tube_pries_result(out.summary);

@@ -88,13 +88,17 @@ CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDem
   loop.add("particles_to_grid", [&] { coupling.particles_to_grid(); });
   loop.add("fluid_step", [&] { coupling.fluid_step(); });
   loop.add("fluid_to_particles", [&] { coupling.fluid_to_particles(); });
-  loop.add("measure", [&] { out.rows.push_back(m.sample(run)); });
+  bool finished = false;
+  loop.add("measure", [&] {
+    out.rows.push_back(m.sample(run));
+    finished = m.finished(out.rows);
+  });
   if (options.after_step) {
-    loop.add("output_frames", [&] { options.after_step(run, coupling.steps(), coupling.steps() == options.steps); });
+    loop.add("output_frames", [&] { options.after_step(run, coupling.steps(), finished || coupling.steps() == options.steps); });
   }
   hs::common::CheckpointSchedule schedule(options.checkpoint_every_wall_s);
   const hs::common::StopRequestScope stop_requests;
-  while (loop.step() < loop.end_step()) {
+  while (!finished && loop.step() < loop.end_step()) {
     loop.run_steps(1);
     show(out.rows.back());
     if (const int signal = hs::common::stop_signal()) {

@@ -78,6 +78,9 @@ class CfdDemMeasurement {
   virtual void add_stages(hs::common::TimeLoop& /*loop*/, CfdDemSolvers& /*run*/) {}
   /// After every CFD step: the time-series row.
   [[nodiscard]] virtual std::vector<double> sample(const CfdDemSolvers& run) = 0;
+  /// After every row: whether the run has measured what it runs for (e.g. a steady state) before the loop's last
+  /// step; the loop then stops after this step. A function of the rows only, so a resumed run decides alike.
+  [[nodiscard]] virtual bool finished(const std::vector<std::vector<double>>& /*rows*/) const { return false; }
   /// The case's own restart state beyond the rows (the skeleton writes them as "series").
   virtual void write_state(hs::common::Checkpoint& /*cp*/) const {}
   virtual void read_state(const hs::common::Checkpoint& /*cp*/) {}
@@ -94,11 +97,13 @@ struct CfdDemRestart {
 };
 
 struct CfdDemLoopOptions {
-  long steps = 1;                          // CFD steps of the whole run (a resumed run continues up to it)
+  long steps = 1;                          // CFD steps of the whole run at most (a resumed run continues up to it;
+                                           // CfdDemMeasurement::finished may stop it earlier)
   double checkpoint_every_wall_s = 600.0;  // and one at the end, and one on Ctrl-C/SIGTERM
   CfdDemRestart restart{};
   std::function<void(const std::vector<double>&)> on_row;   // every row, the saved ones first on a resume
-  /// After every CFD step, with the step count and whether it is the last (ParaView frames; reads only).
+  /// After every CFD step, with the step count and whether it is the last (ParaView frames; reads only). The last
+  /// is options.steps or the step after which the measurement said finished.
   std::function<void(const CfdDemSolvers&, long, bool)> after_step;
   hs::common::Progress* progress = nullptr;
 };
@@ -110,7 +115,7 @@ struct CfdDemOutcome {
   double prepare_seconds = 0.0;            // the measurement's prepare() (e.g. a plasma-only reference run)
 };
 
-/// Runs `m` on `run` up to options.steps: prepare, then start (fresh) or the checkpoint (resume), the stages
+/// Runs `m` on `run` up to options.steps or until m.finished: prepare, then start (fresh) or the checkpoint (resume), the stages
 /// dem_substeps, the case's, particles_to_grid, fluid_step, fluid_to_particles, measure; a checkpoint every
 /// checkpoint_every_wall_s and at the end; on SIGINT/SIGTERM a checkpoint and RunInterrupted. ConfigError for a
 /// missing checkpoint or one of another case type or length.

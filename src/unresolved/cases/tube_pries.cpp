@@ -48,6 +48,11 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   c.piso_correctors = read_piso_correctors(numerics);
   c.n_coupling = static_cast<int>(numerics.integer_in("n_coupling", 1, 1000000));
   c.end_time_s = numerics.positive("end_time_s");
+  // Past end_time_s the run goes on until Ht_d and mu_rel are steady, at most to max_end_time_s (absent: no further).
+  c.max_end_time_s = numerics.positive_or("max_end_time_s", c.end_time_s);
+  if (c.max_end_time_s < c.end_time_s) {
+    numerics.fail("max_end_time_s", fmt::format("must be at least end_time_s = {:.6g} s (the shortest run)", c.end_time_s));
+  }
   c.average_from_fraction = numerics.number_in_or("average_from_fraction", 0.0, 0.95, 0.5);
   c.steady_tolerance = numerics.positive_or("steady_tolerance", 0.02);   // 2%: below the 5% acceptance band
   c.checkpoint_every_wall_s = numerics.positive_or("checkpoint_every_wall_s", 600.0);   // DESIGN.md: every N minutes
@@ -66,7 +71,10 @@ TubePriesConfig parse_tube_pries(hs::common::ConfigFile& file, bool quick) {
   const double u_max = -c.pressure_gradient_Pa_m * r * r / (4.0 * c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s);
   check_courant(numerics, u_max, c.dt_s, dx, "the Poiseuille centreline speed");
   check_dem_step(numerics, c.particles, c.dt_s, c.n_coupling);
-  if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
+  if (quick) {
+    c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
+    c.max_end_time_s = c.end_time_s;
+  }
   c.vtk_every_s = root.section_or_empty("output").positive_or("vtk_every_s", 0.0);   // 0 (absent): final frame only
   if (c.wall_correction != hs::closures::WallCorrection::none) {
     try {

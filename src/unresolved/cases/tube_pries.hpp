@@ -33,9 +33,10 @@ struct TubePriesConfig {
   PressureCoupling pressure_coupling = PressureCoupling::piso;   // [numerics] pressure_coupling
   int piso_correctors = kCfdDemPisoCorrectors;   // [numerics] piso_correctors (loop_numerics.hpp)
   int n_coupling = 1;                    // DEM steps per CFD step
-  double end_time_s = 0.0;
+  double end_time_s = 0.0;               // the shortest run; from here on it is checked for a steady state
+  double max_end_time_s = 0.0;           // and continues until steady, at most to this (equal: a fixed length)
   double average_from_fraction = 0.5;    // Ht_d and Q are averaged over the last (1 - this) of the run
-  double steady_tolerance = 0.02;        // steady when the two last quarters' mean Ht_d differ by less
+  double steady_tolerance = 0.02;        // steady when the trends of Ht_d and mu_rel over that window move them less
   bool void_fraction_rate = false;       // d(eps)/dt source (see CouplingSettings::void_fraction_rate)
   hs::closures::ClosureSpec drag{}, lift{}, deformation{};   // model "none": no lift / DI = 0
   hs::closures::WallCorrection wall_correction = hs::closures::WallCorrection::none;   // confinement factor on the drag
@@ -89,7 +90,7 @@ class CfdDemFrames;
 /// Runs the plasma-only reference and the coupled tube on the CFD-DEM skeleton (tube_pries_measurement.cpp); throws ConfigError for inputs found bad on the way
 /// (insertion impossible, particles outside the tube, DEM step, a checkpoint of another case). With restart.dir a
 /// checkpoint is written every c.checkpoint_every_wall_s and at the end; with restart.resume the run continues
-/// from it up to c.end_time_s (which may be later than the saved run's): the samples before the checkpoint are
+/// from it up to c.max_end_time_s (which may be later than the saved run's): the samples before the checkpoint are
 /// handed to `observe` again first, and Ht_d and Q are averaged over the whole series as if never stopped.
 /// `frames` (may be null) is handed the solvers after every CFD step (ParaView output; reads only).
 [[nodiscard]] TubePriesResult simulate_tube_pries(const TubePriesConfig& c,

@@ -25,7 +25,6 @@ FlowDrive drive_of(const TubePriesConfig& c) {
   return {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = c.pressure_gradient_Pa_m};
 }
 
-long steps_of(const TubePriesConfig& c) { return std::max(1L, std::lround(c.end_time_s / c.dt_s)); }
 
 double rbc_flow_rate(const DemSystem& dem, double length_m) {
   const ParticleStore& p = dem.particles();
@@ -45,8 +44,9 @@ struct SeriesAverages {
   hs::common::LinearTrend ht_d, mu_rel;
 };
 
-SeriesAverages average_series(const std::vector<std::vector<double>>& rows, double from_fraction, double q_plasma_m3_s) {
-  const long total = static_cast<long>(rows.size());
+/// Of the first `total` rows.
+SeriesAverages average_series(const std::vector<std::vector<double>>& rows, long total, double from_fraction,
+                              double q_plasma_m3_s) {
   const long first = static_cast<long>(from_fraction * static_cast<double>(total));
   double sum_blood = 0.0, sum_rbc = 0.0;
   std::array<double, 2> half_rbc{}, half_blood{};
@@ -65,7 +65,23 @@ SeriesAverages average_series(const std::vector<std::vector<double>>& rows, doub
   return {sum_blood / n, sum_rbc / n, half_rbc[0] / half_blood[0], half_rbc[1] / half_blood[1], total - first, ht_d, mu_rel};
 }
 
+/// The least-squares changes of Ht_d and mu_rel over the averaging window, each over its mean.
+struct WindowTrends {
+  double ht_d, mu_rel;
+  [[nodiscard]] bool within(double tolerance) const { return std::abs(ht_d) <= tolerance && std::abs(mu_rel) <= tolerance; }
+};
+
+WindowTrends window_trends(const SeriesAverages& avg) {
+  return {avg.ht_d.change_over_window() / avg.ht_d.mean(), avg.mu_rel.change_over_window() / avg.mu_rel.mean()};
+}
+
 }  // namespace
+
+long min_steps_of(const TubePriesConfig& c) { return std::max(1L, std::lround(c.end_time_s / c.dt_s)); }
+
+long max_steps_of(const TubePriesConfig& c) {
+  return std::max(min_steps_of(c), std::lround(c.max_end_time_s / c.dt_s));
+}
 
 CfdDemSetup tube_pries_setup(const TubePriesConfig& c) {
   const double r = 0.5 * c.diameter_m;
@@ -97,7 +113,7 @@ void TubePriesMeasurement::prepare(CfdDemSolvers& run) {
   // From rest the plasma's flow rate relaxes geometrically (measured: by 0.86 per step at 10 cells across, 0.935 at
   // 15), so what is left after a step that changed it by dq at the ratio f = dq / dq_before is dq f / (1 - f): stop
   // when that is below 1e-12 of Q instead of at the run's end time (thousands of steps, most of a fine grid's set-up).
-  const long steps = steps_of(c_);
+  const long steps = max_steps_of(c_);
   double q = 0.0;
   double change = 0.0;
   for (long s = 0; s < steps; ++s) {
@@ -130,6 +146,17 @@ std::vector<double> TubePriesMeasurement::sample(const CfdDemSolvers& run) {
   return {run.fluid().time_s(), q_blood, q_rbc, q_rbc / q_blood, static_cast<double>(run.fluid().last_stats().pressure_iterations)};
 }
 
+bool TubePriesMeasurement::finished(const std::vector<std::vector<double>>& rows) const {
+  const long n = static_cast<long>(rows.size());
+  const long first = min_steps_of(c_);
+  const long every = std::max(1L, first / 10);
+  if (max_steps_of(c_) == first || n < first || (n - first) % every != 0) return false;
+  const auto steady_after = [&](long k) {
+    return window_trends(average_series(rows, k, c_.average_from_fraction, q_plasma_m3_s_)).within(c_.steady_tolerance);
+  };
+  return steady_after(n) && steady_after(n - every);
+}
+
 void TubePriesMeasurement::write_state(hs::common::Checkpoint& cp) const {
   const std::vector<double> insertion{ht_achieved_, rbc_count_};
   cp.put("insertion", insertion);
@@ -143,7 +170,7 @@ void TubePriesMeasurement::read_state(const hs::common::Checkpoint& cp) {
 }
 
 nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std::vector<std::vector<double>>& rows) const {
-  const SeriesAverages avg = average_series(rows, c_.average_from_fraction, q_plasma_m3_s_);
+  const SeriesAverages avg = average_series(rows, static_cast<long>(rows.size()), c_.average_from_fraction, q_plasma_m3_s_);
   const double r_tube = 0.5 * c_.diameter_m;
   const double q_blood = avg.q_blood_m3_s;
   const double mu = c_.fluid.density_kg_m3 * c_.fluid.kinematic_viscosity_m2_s;
@@ -170,11 +197,15 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
   res["fahraeus_ratio_no_migration"] = 2.0 - reach * reach;
   // Steady (issue #25): over the averaging window, the least-squares trend moves neither Ht_d nor mu_rel by more
   // than steady_tolerance of its mean. The two halves' difference stays as a diagnostic.
-  const double ht_d_trend = avg.ht_d.change_over_window() / avg.ht_d.mean();
-  const double mu_rel_trend = avg.mu_rel.change_over_window() / avg.mu_rel.mean();
-  res["steady"] = std::abs(ht_d_trend) <= c_.steady_tolerance && std::abs(mu_rel_trend) <= c_.steady_tolerance;
-  res["ht_d_trend_over_window"] = ht_d_trend;
-  res["mu_rel_trend_over_window"] = mu_rel_trend;
+  const WindowTrends trends = window_trends(avg);
+  res["steady"] = trends.within(c_.steady_tolerance);
+  res["ht_d_trend_over_window"] = trends.ht_d;
+  res["mu_rel_trend_over_window"] = trends.mu_rel;
+  // The run's length: end_time_s at least, then on until steady (finished) or max_end_time_s (capped: judged as is).
+  res["end_time_s"] = rows.empty() ? 0.0 : rows.back()[0];
+  res["stopped_when_steady"] = static_cast<long>(rows.size()) < max_steps_of(c_);
+  num["min_end_time_s"] = c_.end_time_s;
+  num["max_end_time_s"] = std::max(c_.end_time_s, c_.max_end_time_s);
   res["ht_d_change_between_averaging_halves"] = avg.ht_d_second_half - avg.ht_d_first_half;
   num["averaged_steps"] = avg.samples;
   res["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
@@ -191,7 +222,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
                                     const TubePriesRestart& restart, CfdDemFrames* frames) {
   CfdDemSolvers run(tube_pries_setup(c));
   TubePriesMeasurement m(c);
-  CfdDemLoopOptions options{.steps = steps_of(c),
+  CfdDemLoopOptions options{.steps = max_steps_of(c),
                             .checkpoint_every_wall_s = c.checkpoint_every_wall_s,
                             .restart = {.dir = restart.dir, .resume = restart.resume, .rank = restart.rank},
                             .on_row = [&](const std::vector<double>& x) { observe({x[0], x[1], x[2], x[3], x[4]}); },

@@ -14,6 +14,10 @@ namespace hs::unresolved {
 /// The periodic tube along z of the case: shape, grid (periodic z), DEM domain, fluid drive and coupling.
 [[nodiscard]] CfdDemSetup tube_pries_setup(const TubePriesConfig& c);
 
+/// CFD steps of the shortest run (end_time_s) and of the longest (max_end_time_s, not below the shortest).
+[[nodiscard]] long min_steps_of(const TubePriesConfig& c);
+[[nodiscard]] long max_steps_of(const TubePriesConfig& c);
+
 /// The result of a run from its summary (Ht_d and mu_rel; the Pries fields are left 0 for the validation side).
 [[nodiscard]] TubePriesResult tube_pries_result(const nlohmann::json& summary);
 
@@ -30,6 +34,9 @@ class TubePriesMeasurement final : public CfdDemMeasurement {
   /// Cells at Ht_c, at rest, in fluid at rest; u_r+'s mean velocity from Q_plasma.
   void start(CfdDemSolvers& run) override;
   [[nodiscard]] std::vector<double> sample(const CfdDemSolvers& run) override;
+  /// Past end_time_s, at every tenth of it: steady here and at the check before (steady_after), so one quiet
+  /// stretch of a drifting series does not end the run.
+  [[nodiscard]] bool finished(const std::vector<std::vector<double>>& rows) const override;
   void write_state(hs::common::Checkpoint& cp) const override;
   void read_state(const hs::common::Checkpoint& cp) override;
   /// Ht_d and Q averaged over the last (1 - average_from_fraction) of the rows, steadiness, groups, model names.
