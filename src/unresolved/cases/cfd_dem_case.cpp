@@ -71,14 +71,17 @@ CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDem
   const auto t0 = std::chrono::steady_clock::now();
   m.prepare(run);
   out.prepare_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  long rows_shown = 0;
   const auto show = [&](const std::vector<double>& row) {
     if (options.on_row) options.on_row(row);
-    if (options.progress != nullptr) options.progress->update(++rows_shown);
+    if (options.progress != nullptr) options.progress->update(static_cast<long>(out.rows.size()));
   };
   if (restart.resume) {
     out.rows = read_checkpoint(run, m, restart);   // restores the mean velocity the saved run used for u_r+ too
-    for (const auto& row : out.rows) show(row);
+    for (const auto& row : out.rows) {
+      if (options.on_row) options.on_row(row);
+    }
+    // One update for the saved rows, so the ETA is measured from the restart, not over the replay's instant.
+    if (options.progress != nullptr && !out.rows.empty()) options.progress->update(static_cast<long>(out.rows.size()));
   } else {
     m.start(run);
   }
