@@ -38,11 +38,17 @@ bool check_tube_pries_run(const std::string& label, const TubePriesConfig& c, co
     checks.skip(label + ": steady, Ht_d and mu_rel vs Pries", "--quick: a run far shorter than the ~1 s the cell-free layer needs");
     return false;
   }
-  const bool steady = r.summary["results"]["steady"].get<bool>();
+  const nlohmann::json& res = r.summary["results"];
+  const bool steady = res["steady"].get<bool>();
+  // Older archived summaries (before max_end_time_s) have no end_time_s: they ran their fixed length.
+  const std::string length = res.contains("end_time_s")
+                                 ? fmt::format("; ran {:.3g} s{}", res["end_time_s"].get<double>(),
+                                               res["stopped_when_steady"].get<bool>() ? ", stopped when steady" : " (the cap)")
+                                 : std::string();
   checks.expect(label + ": steady", steady,
-                fmt::format("trend over the averaging window: Ht_d {:+.2f}%, mu_rel {:+.2f}% (tolerance {:.0f}%)",
-                            100.0 * r.summary["results"]["ht_d_trend_over_window"].get<double>(),
-                            100.0 * r.summary["results"]["mu_rel_trend_over_window"].get<double>(), 100.0 * c.steady_tolerance));
+                fmt::format("trend over the averaging window: Ht_d {:+.2f}%, mu_rel {:+.2f}% (tolerance {:.0f}%){}",
+                            100.0 * res["ht_d_trend_over_window"].get<double>(),
+                            100.0 * res["mu_rel_trend_over_window"].get<double>(), 100.0 * c.steady_tolerance, length));
   return steady;
 }
 
