@@ -209,6 +209,11 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
   res["ht_d_change_between_averaging_halves"] = avg.ht_d_second_half - avg.ht_d_first_half;
   num["averaged_steps"] = avg.samples;
   res["lost_solid_volume_m3"] = run.coupling().exchange().lost_solid_volume_m3;
+  // How crowded the cells are at the end (the last DEM sub-step's counts): collisions are what can move force-free,
+  // lift-free spheres across streamlines (shear-induced migration), so a Fahraeus ratio above the no-migration one
+  // without a lift is read beside them.
+  res["pair_contacts_at_end"] = static_cast<long>(run.dem().stats().pair_contacts);
+  res["wall_contacts_at_end"] = static_cast<long>(run.dem().stats().wall_contacts);
   write_model_summary(c_.coupling_model(), num);
   num["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
   num["piso_correctors"] = c_.piso_correctors;

@@ -37,7 +37,8 @@ TEST(TubePriesCase, CommittedCaseRunsAndSummarises) {
   EXPECT_TRUE(s["groups"].contains("channel_reynolds"));
   const auto& res = s["results"];
   for (const char* key : {"discharge_hematocrit", "relative_apparent_viscosity", "pries_discharge_hematocrit",
-                          "pries_relative_apparent_viscosity", "ht_d_error_pct", "mu_rel_error_pct"}) {
+                          "pries_relative_apparent_viscosity", "ht_d_error_pct", "mu_rel_error_pct", "end_time_s",
+                          "stopped_when_steady", "pair_contacts_at_end", "wall_contacts_at_end"}) {
     EXPECT_TRUE(res.contains(key)) << key;
   }
   // Physical bounds, not accuracy (the quick run is 20 steps): 0 < Ht_d < 1, and cells released at rest in a fluid
