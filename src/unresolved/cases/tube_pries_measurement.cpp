@@ -25,7 +25,6 @@ FlowDrive drive_of(const TubePriesConfig& c) {
   return {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = c.pressure_gradient_Pa_m};
 }
 
-
 double rbc_flow_rate(const DemSystem& dem, double length_m) {
   const ParticleStore& p = dem.particles();
   double sum = 0.0;
