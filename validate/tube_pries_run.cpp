@@ -34,7 +34,7 @@ int run_tube_pries(const hs::common::CaseRequest& request) {
   if (c.max_end_time_s > c.end_time_s) {
     log.info("tube-pries: {:.4g} s, then on until Ht_d and mu_rel are steady (trends within {:.3g} % over the averaging "
              "window at two checks {:.4g} s apart), at most {:.4g} s", c.end_time_s, 100.0 * c.steady_tolerance,
-             static_cast<double>(std::max(1L, min_steps_of(c) / 10)) * c.dt_s, c.max_end_time_s);
+             static_cast<double>(steady_check_every_steps(c)) * c.dt_s, c.max_end_time_s);
   }
   CfdDemSolvers run(tube_pries_setup(c));
   TubePriesMeasurement m(c);

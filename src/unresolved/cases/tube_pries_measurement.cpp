@@ -82,6 +82,8 @@ long max_steps_of(const TubePriesConfig& c) {
   return std::max(min_steps_of(c), std::lround(c.max_end_time_s / c.dt_s));
 }
 
+long steady_check_every_steps(const TubePriesConfig& c) { return std::max(1L, min_steps_of(c) / 10); }
+
 CfdDemSetup tube_pries_setup(const TubePriesConfig& c) {
   const double r = 0.5 * c.diameter_m;
   std::array<SideCondition, 6> sides{};
@@ -148,7 +150,7 @@ std::vector<double> TubePriesMeasurement::sample(const CfdDemSolvers& run) {
 bool TubePriesMeasurement::finished(const std::vector<std::vector<double>>& rows) const {
   const long n = static_cast<long>(rows.size());
   const long first = min_steps_of(c_);
-  const long every = std::max(1L, first / 10);
+  const long every = steady_check_every_steps(c_);
   if (max_steps_of(c_) == first || n < first || (n - first) % every != 0) return false;
   const auto steady_after = [&](long k) {
     return window_trends(average_series(rows, k, c_.average_from_fraction, q_plasma_m3_s_)).within(c_.steady_tolerance);

@@ -17,6 +17,8 @@ namespace hs::unresolved {
 /// CFD steps of the shortest run (end_time_s) and of the longest (max_end_time_s, not below the shortest).
 [[nodiscard]] long min_steps_of(const TubePriesConfig& c);
 [[nodiscard]] long max_steps_of(const TubePriesConfig& c);
+/// Steps between two steady-state checks past end_time_s: a tenth of the shortest run.
+[[nodiscard]] long steady_check_every_steps(const TubePriesConfig& c);
 
 /// The result of a run from its summary (Ht_d and mu_rel; the Pries fields are left 0 for the validation side).
 [[nodiscard]] TubePriesResult tube_pries_result(const nlohmann::json& summary);
