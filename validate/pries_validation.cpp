@@ -24,9 +24,11 @@
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/run_folder.hpp"
+#include "common/stop_request.hpp"
 #include "unresolved/cases/coupling_model.hpp"
 #include "unresolved/cases/tube_pries.hpp"
 #include "unresolved/cases/tube_pries_measurement.hpp"
+#include "validate/tube_checkpoint.hpp"
 #include "validate/tube_pries_checks.hpp"
 #include "validate/tube_pries_comparison.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
@@ -100,13 +102,15 @@ TubePriesConfig config_for(double diameter_um, double hematocrit, bool quick, co
   c.dt_s = std::min(2e-4, 0.25 * dx / (2.0 * u_mean));   // Courant <= 0.25 at the plasma centreline speed
   const double limit = 0.1 * std::min(rayleigh_time_s(c.particles), hertz_time_s(c.particles, c.particles.max_impact_velocity_m_s));
   c.n_coupling = static_cast<int>(std::ceil(c.dt_s / (0.9 * limit)));
-  // 1 s: a lift of ~1e-13-1e-12 N against Stokes drag moves a cell 2-20 um/s, so the cell-free layer needs ~1 s to
-  // form (0.1 s left Ht_d 10-15% low with the learned lift; 1 s: within 4% at D = 30 and 50 um, tube-pries runs).
-  c.end_time_s = quick ? 0.01 : 1.0;
-  // Then on until steady (issue #25: the end time follows the migration, measured, not estimated): at 1 s the
-  // grid-study tubes still had Ht_d trends of 2-4 % over their window (validate/results/2026-12-03_piso4_grid);
-  // 4 s is the cap, a capped unsteady tube fails.
-  c.max_end_time_s = quick ? c.end_time_s : 4.0;
+  // 1 s at D = 30 um: a lift of ~1e-13-1e-12 N against Stokes drag moves a cell 2-20 um/s, so the cell-free layer
+  // needs ~1 s to form (0.1 s left Ht_d 10-15% low with the learned lift). Then on until steady (issue #25: the end
+  // time follows the migration, measured, not estimated), capped at 4 s: the D = 30 um tubes were steady by
+  // 2.3-2.9 s (validate/results/2026-12-03_pries_table). Both scale with the migration time, ~D^2 at this fixed mean
+  // velocity (the shear rate falls as 1/D, the distance to migrate grows as D): at a 4 s cap D = 50 um Ht_c 0.05
+  // and D = 100 um still had Ht_d trends of 5-8 % over their window (same table). A capped unsteady tube fails.
+  const double migration_scale = (diameter_um / 30.0) * (diameter_um / 30.0);
+  c.end_time_s = quick ? 0.01 : 1.0 * migration_scale;
+  c.max_end_time_s = quick ? c.end_time_s : 4.0 * migration_scale;
   c.seed = 1;
   select_closures(closures, c);
   c.suspension_viscosity = viscosity;
@@ -153,7 +157,8 @@ std::string fingerprint(const TubePriesConfig& c, bool quick) {
   return j.dump();
 }
 
-/// One tube: read from the archive when its fingerprint matches, otherwise run and archive it (atomically).
+/// One tube: read from the archive when its fingerprint matches, otherwise run (from its own checkpoint when an
+/// interrupted table left one for the same fingerprint) and archive it (atomically).
 TubePriesResult tube_result(const TubePriesConfig& c, bool quick, const fs::path& archive) {
   const std::string key = fingerprint(c, quick);
   if (fs::exists(archive)) {
@@ -164,8 +169,18 @@ TubePriesResult tube_result(const TubePriesConfig& c, bool quick, const fs::path
       return tube_pries_result(stored.at("summary"));
     }
   }
-  TubePriesResult r = simulate_tube_pries(c, [](const TubePriesSample&) {});
+  const TubePriesRestart restart = tube_checkpoint(archive, key);
+  if (restart.resume) fmt::print("pries: {} resumed from its checkpoint\n", archive.stem().string());
+  TubePriesResult r;
+  try {
+    r = simulate_tube_pries(c, [](const TubePriesSample&) {}, restart);
+  } catch (const hs::common::RunInterrupted& stop) {   // the run's own hint (--resume) is not this command's
+    throw hs::common::RunInterrupted(fmt::format("pries: tube {} stopped by a signal, its checkpoint kept in {}: the same "
+                                                 "command resumes it", archive.stem().string(), restart.dir.string()),
+                                     stop.exit_code() - 128);
+  }
   hs::common::write_json(archive, {{"fingerprint", key}, {"summary", r.summary}});
+  discard_tube_checkpoint(archive);
   return r;
 }
 

@@ -93,6 +93,7 @@ TEST(Cli, PriesResumesFromItsArchivedTubes) {
   const std::string json = (dir / "table.json").string();
   ASSERT_EQ(run("validate pries --quick --json " + json).code, 0);
   EXPECT_TRUE(fs::exists(dir / "table.tubes" / "D30_ht0.10_seed1.json"));
+  EXPECT_FALSE(fs::exists(dir / "table.tubes" / "D30_ht0.10_seed1.checkpoint"));   // dropped once the tube is archived
   const auto again = run("validate pries --quick --json " + json);
   EXPECT_EQ(again.code, 0) << again.output;
   std::size_t reused = 0;
