@@ -3,6 +3,7 @@
 #include "validate/pries_validation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -126,6 +127,13 @@ TubePriesConfig config_for(double diameter_um, double hematocrit, bool quick, co
   return c;
 }
 
+/// The figure of a (possibly partial) table over Pries 1992's curves (tools/plot_pries.py); false when the plot failed.
+bool plot_table(const fs::path& csv, const fs::path& curves, const fs::path& png) {
+  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}' --curves '{}'", (fs::path(HS_SOURCE_DIR) / "tools/plot_pries.py").string(),
+                                      csv.string(), png.string(), curves.string());
+  return std::system(cmd.c_str()) == 0;
+}
+
 fs::path output_dir(const hs::common::TaskOptions& options) {
   const fs::path dir = options.json_file ? fs::absolute(*options.json_file).parent_path() : fs::current_path();
   fs::create_directories(dir);   // --json results/pries.json makes results/
@@ -139,6 +147,10 @@ namespace {
 /// Seeds per table entry (issue #25: at least 3; the entry is their mean, its uncertainty their scatter);
 /// --quick: one.
 constexpr int kSeeds = 3;
+
+/// The table: the seed paper's diameters and tube hematocrits (section 4.2).
+constexpr std::array kDiametersUm{30.0, 50.0, 100.0};
+constexpr std::array kTubeHematocrits{0.05, 0.10, 0.15};
 
 /// What decides a tube's result: a stored tube is reused only when this matches (model, closure files' contents,
 /// numerics, seed), so an interrupted table resumes and a changed model reruns.
@@ -202,6 +214,9 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   const std::string stem = options.json_file ? options.json_file->stem().string() : default_stem;
   const fs::path csv_path = dir / (stem + ".csv");
   const fs::path tubes_dir = dir / (stem + ".tubes");
+  const fs::path curves_path = dir / (stem + ".pries_curves.csv");
+  const fs::path png = dir / (stem + ".png");
+  write_pries_curves(curves_path, {kTubeHematocrits.begin(), kTubeHematocrits.end()});
   std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
                                        "mu_rel_error_pct", "rbc_count", "steady", "seeds", "ht_d_error_se_pct", "mu_rel_error_se_pct",
@@ -222,8 +237,8 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   double max_error = 0.0;
   hs::common::CheckList checks;
   const TubePriesCheckOptions check_options{.quick = options.quick, .tighten = options.tighten};
-  for (const double d_um : {30.0, 50.0, 100.0}) {
-    for (const double ht : {0.05, 0.10, 0.15}) {
+  for (const double d_um : kDiametersUm) {
+    for (const double ht : kTubeHematocrits) {
       const std::string entry = fmt::format("D = {:.0f} um, Ht_c {:.2f}", d_um, ht);
       std::vector<double> ht_d, mu_rel, ht_d_err, mu_err, ht_t, ht_d_ref, mu_ref, count;
       bool all_steady = true;
@@ -268,6 +283,8 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
                                    {"discharge_hematocrit", mean_ht_d}, {"relative_apparent_viscosity", mean_mu},
                                    {"ht_d_error_pct", e_ht}, {"ht_d_error_se_pct", se_ht}, {"mu_rel_error_pct", e_mu},
                                    {"mu_rel_error_se_pct", se_mu}, {"steady", all_steady}, {"runs", runs}});
+      // The figure after every entry: a table of 27 tubes runs for hours, the partial one is worth seeing.
+      if (!plot_table(csv_path, curves_path, png)) fmt::print("pries: the plot failed (tools/plot_pries.py); the table is in {}\n", csv_path.string());
     }
   }
   result["max_error_pct"] = max_error;
@@ -275,10 +292,8 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   checks.write_to(result);
   result["provenance"] = hs::common::provenance();
   csv.reset();   // closes the file before the plot reads it
-  const fs::path png = dir / (stem + ".png");
-  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}'", (fs::path(HS_SOURCE_DIR) / "tools/plot_pries.py").string(),
-                                      csv_path.string(), png.string());
-  result["plot"] = std::system(cmd.c_str()) == 0 ? png.string() : "";
+  result["plot"] = plot_table(csv_path, curves_path, png) ? png.string() : "";
+  result["pries_curves"] = curves_path.string();
   hs::common::write_json(options.json_file ? *options.json_file : dir / (stem + ".json"), result);
   fmt::print("pries: max error {:.1f}% (entry means over {} seed{}){}{} (table {}, plot {})\n", max_error, seeds,
              seeds == 1 ? "" : "s", options.quick ? " of --quick runs, not a validation" : "",

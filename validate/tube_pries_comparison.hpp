@@ -3,6 +3,9 @@
 // Ht_d and mu_rel, and analysis/pries1992 (which no solver reads) gives the reference values.
 #pragma once
 
+#include <filesystem>
+#include <vector>
+
 #include "unresolved/cases/tube_pries.hpp"
 
 namespace hs::unresolved {
@@ -11,5 +14,9 @@ namespace hs::unresolved {
 /// (summary "tube_hematocrit"), and adds pries_discharge_hematocrit, pries_relative_apparent_viscosity,
 /// ht_d_error_pct and mu_rel_error_pct to r.summary.
 void add_pries_comparison(const TubePriesConfig& c, TubePriesResult& r);
+
+/// Pries 1992's curves for the plot (as the seed paper's Figs. 12-13 draw them): for each tube hematocrit, Ht_d / Ht_t
+/// and mu_rel at 61 diameters log-spaced over 10-300 um (the law's fitted range is 3.3-1978 um), one CSV row each.
+void write_pries_curves(const std::filesystem::path& csv, const std::vector<double>& tube_hematocrits);
 
 }  // namespace hs::unresolved

@@ -123,6 +123,11 @@ def main():
         png(tmp, "dataset.png", [t("plot_dataset.py"), dataset, os.path.join(tmp, "dataset.png")], "plot_dataset on dataset.csv.gz")
         pries = gz_copy(os.path.join(ROOT, "validate", "results", "2026-12-01_pries_checks.csv"), os.path.join(tmp, "pries.csv.gz"))
         png(tmp, "pries.png", [t("plot_pries.py"), pries, os.path.join(tmp, "pries.png")], "plot_pries on a .csv.gz")
+        curves = gz_table(os.path.join(tmp, "curves.csv.gz"), ["diameter_um", "tube_hematocrit", "pries_discharge_hematocrit",
+                                                                "pries_ht_d_over_ht_t", "pries_relative_apparent_viscosity"],
+                          [(d, h, h * 1.3, 1.3, 1.1 + h) for h in (0.05, 0.10, 0.15) for d in (10, 30, 100, 300)])
+        png(tmp, "pries_curves.png", [t("plot_pries.py"), pries, os.path.join(tmp, "pries_curves.png"), "--curves", curves,
+                                      "--baseline", pries, "--baseline-label", "rigid"], "plot_pries with the law's curves and a baseline")
         stretch = gz_table(os.path.join(tmp, "stretching.csv.gz"), ["force_N", "axial_m", "transverse_m"],
                            [(f * 1e-12, (7.8 + 0.05 * f) * 1e-6, (7.8 - 0.02 * f) * 1e-6) for f in (0, 50, 100, 150)])
         band = os.path.join(ROOT, "data", "reference", "mills2004_rbc_stretch_experiment.csv")
