@@ -55,7 +55,8 @@ fs::path first_toml(const fs::path& dir) {
 /// tube-pries case) with the cells' stress from a first-principles law, Einstein's 1 + 2.5 phi (issue #25: nothing
 /// from the reference in the validated model). `--suspension-viscosity pries_bulk` puts Pries 1992's own wide-tube
 /// law in instead: a sensitivity study, labelled so in the output and the JSON, never a validation.
-/// `--closures schiller_naumann --suspension-viscosity none` is the rigid-sphere baseline.
+/// `--closures schiller_naumann` is the rigid-sphere baseline (no lift; Einstein's stress kept, which is itself a
+/// rigid-sphere law, so the two tables differ in the closures only).
 const std::string kDefaultClosures = "resolved";   // the committed set, found as `drag = "resolved"` is (closures.md)
 constexpr const char* kDefaultViscosity = "einstein";
 
