@@ -24,6 +24,7 @@
 #include "common/check_list.hpp"
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
+#include "common/progress.hpp"
 #include "common/run_folder.hpp"
 #include "common/stop_request.hpp"
 #include "unresolved/cases/coupling_model.hpp"
@@ -183,10 +184,16 @@ TubePriesResult tube_result(const TubePriesConfig& c, bool quick, const fs::path
     }
   }
   const TubePriesRestart restart = tube_checkpoint(archive, key);
-  if (restart.resume) fmt::print("pries: {} resumed from its checkpoint\n", archive.stem().string());
+  if (restart.resume) {
+    fmt::print("pries: {} resumed from its checkpoint\n", archive.stem().string());
+    std::fflush(stdout);   // before the progress line on stderr
+  }
   TubePriesResult r;
   try {
-    r = simulate_tube_pries(c, [](const TubePriesSample&) {}, restart);
+    // A tube takes minutes (D = 30 um) to hours (100 um): its own progress line, ETA to the cap (it may stop earlier).
+    hs::common::Progress progress(fmt::format("pries {}", archive.stem().string()), max_steps_of(c), !quick);
+    r = simulate_tube_pries(c, [](const TubePriesSample&) {}, restart, nullptr, &progress);
+    progress.finish();
   } catch (const hs::common::RunInterrupted& stop) {   // the run's own hint (--resume) is not this command's
     throw hs::common::RunInterrupted(fmt::format("pries: tube {} stopped by a signal, its checkpoint kept in {}: the same "
                                                  "command resumes it", archive.stem().string(), restart.dir.string()),

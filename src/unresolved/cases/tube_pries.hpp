@@ -12,6 +12,7 @@
 #include "closures/closure_registry.hpp"
 #include "closures/wall_correction.hpp"
 #include "common/case_request.hpp"
+#include "common/progress.hpp"
 #include "unresolved/cases/coupling_model.hpp"
 #include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/coupling/suspension_viscosity.hpp"
@@ -92,10 +93,12 @@ class CfdDemFrames;
 /// checkpoint is written every c.checkpoint_every_wall_s and at the end; with restart.resume the run continues
 /// from it up to c.max_end_time_s (which may be later than the saved run's): the samples before the checkpoint are
 /// handed to `observe` again first, and Ht_d and Q are averaged over the whole series as if never stopped.
-/// `frames` (may be null) is handed the solvers after every CFD step (ParaView output; reads only).
+/// `frames` (may be null) is handed the solvers after every CFD step (ParaView output; reads only); `progress` (may be
+/// null) is updated with the CFD steps done, out of those up to max_end_time_s.
 [[nodiscard]] TubePriesResult simulate_tube_pries(const TubePriesConfig& c,
                                                   const std::function<void(const TubePriesSample&)>& observe,
-                                                  const TubePriesRestart& restart = {}, CfdDemFrames* frames = nullptr);
+                                                  const TubePriesRestart& restart = {}, CfdDemFrames* frames = nullptr,
+                                                  hs::common::Progress* progress = nullptr);
 
 /// `hemoscale run` entry: the run on the CFD-DEM skeleton, then the Pries comparison and the checks
 /// (validate/tube_pries_checks.hpp): exit 0 when they pass, 1 when one fails. Defined on the validation side,

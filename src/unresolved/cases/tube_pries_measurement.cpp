@@ -225,7 +225,7 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
 }
 
 TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::function<void(const TubePriesSample&)>& observe,
-                                    const TubePriesRestart& restart, CfdDemFrames* frames) {
+                                    const TubePriesRestart& restart, CfdDemFrames* frames, hs::common::Progress* progress) {
   CfdDemSolvers run(tube_pries_setup(c));
   TubePriesMeasurement m(c);
   CfdDemLoopOptions options{.steps = max_steps_of(c),
@@ -233,7 +233,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
                             .restart = {.dir = restart.dir, .resume = restart.resume, .rank = restart.rank},
                             .on_row = [&](const std::vector<double>& x) { observe({x[0], x[1], x[2], x[3], x[4]}); },
                             .after_step = {},
-                            .progress = nullptr};
+                            .progress = progress};
   if (frames != nullptr) {
     options.after_step = [frames](const CfdDemSolvers& s, long step, bool last) { frames->after_step(s.fluid(), s.dem(), step, last); };
   }
