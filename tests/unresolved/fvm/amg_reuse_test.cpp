@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Keeping the BoomerAMG hierarchy across pressure matrices of one pattern (pressure_solver.hpp AmgReuse): the
-// solution meets the same residual tolerance as with a fresh hierarchy, and the drift bound forces a rebuild.
+// solution meets the same residual tolerance as with a fresh hierarchy, and the drift and iteration bounds force a
+// rebuild.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -130,6 +132,34 @@ TEST(AmgReuse, DiagonalDriftBeyondTheBoundRebuilds) {
   solver.set_matrix(pressure_matrix(eps));
   EXPECT_EQ(solver.setups(), 2);
   EXPECT_EQ(solver.reuses(), 1);
+}
+
+TEST(AmgReuse, ASolveBeyondTheIterationBoundRebuildsAtTheNextMatrix) {
+  // The growth rule alone (the drift bound switched off): with growth 1 and no slack, a reused solve that needs
+  // more iterations than the fresh one marks the hierarchy stale, and the next set_matrix() builds a new one; with
+  // an unreachable bound the same sequence keeps it.
+  const SolveTolerance tol{.tolerance = 1e-10, .rel_tol = 0.0, .max_iterations = 500};
+  std::vector<double> b(static_cast<std::size_t>(kN * kN * kN));
+  for (std::size_t r = 0; r < b.size(); ++r) b[r] = std::sin(0.37 * static_cast<double>(r)) + 0.1;
+  std::vector<double> far = void_fraction(0.0);
+  for (std::size_t r = 0; r < far.size(); r += 2) far[r] *= 0.2;   // every other cell nearly closed: another operator
+  const auto run = [&](AmgReuse rule) {
+    PressureSolver solver(MPI_COMM_WORLD, rule);
+    std::vector<double> x(b.size(), 0.0);
+    solver.set_matrix(pressure_matrix(void_fraction(0.0)));
+    const int fresh = solver.solve(b, x, tol);
+    solver.set_matrix(pressure_matrix(far));
+    std::fill(x.begin(), x.end(), 0.0);
+    const int aged = solver.solve(b, x, tol);
+    solver.set_matrix(pressure_matrix(far));
+    return std::tuple{fresh, aged, solver.setups()};
+  };
+  const auto [fresh, aged, setups] = run(AmgReuse{.max_iteration_growth = 1.0, .iteration_slack = 0, .max_diagonal_change = 1e9});
+  ASSERT_GT(aged, fresh) << "the aged hierarchy must need more iterations for this test to say anything";
+  EXPECT_EQ(setups, 2);
+  const auto [fresh2, aged2, kept] = run(AmgReuse{.max_iteration_growth = 1e9, .iteration_slack = 0, .max_diagonal_change = 1e9});
+  EXPECT_EQ(aged2, aged);
+  EXPECT_EQ(kept, 1);
 }
 
 }  // namespace
