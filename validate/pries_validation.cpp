@@ -225,6 +225,7 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   const fs::path curves_path = dir / (stem + ".pries_curves.csv");
   const fs::path png = dir / (stem + ".png");
   write_pries_curves(curves_path, {kTubeHematocrits.begin(), kTubeHematocrits.end()});
+  bool plotted = false;
   std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
                                        "mu_rel_error_pct", "rbc_count", "steady", "seeds", "ht_d_error_se_pct", "mu_rel_error_se_pct",
@@ -292,7 +293,8 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
                                    {"ht_d_error_pct", e_ht}, {"ht_d_error_se_pct", se_ht}, {"mu_rel_error_pct", e_mu},
                                    {"mu_rel_error_se_pct", se_mu}, {"steady", all_steady}, {"runs", runs}});
       // The figure after every entry: a table of 27 tubes runs for hours, the partial one is worth seeing.
-      if (!plot_table(csv_path, curves_path, png)) fmt::print("pries: the plot failed (tools/plot_pries.py); the table is in {}\n", csv_path.string());
+      plotted = plot_table(csv_path, curves_path, png);
+      if (!plotted) fmt::print("pries: the plot failed (tools/plot_pries.py); the table is in {}\n", csv_path.string());
     }
   }
   result["max_error_pct"] = max_error;
@@ -300,7 +302,7 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   checks.write_to(result);
   result["provenance"] = hs::common::provenance();
   csv.reset();   // closes the file before the plot reads it
-  result["plot"] = plot_table(csv_path, curves_path, png) ? png.string() : "";
+  result["plot"] = plotted ? png.string() : "";   // drawn after the last entry
   result["pries_curves"] = curves_path.string();
   hs::common::write_json(options.json_file ? *options.json_file : dir / (stem + ".json"), result);
   fmt::print("pries: max error {:.1f}% (entry means over {} seed{}){}{} (table {}, plot {})\n", max_error, seeds,

@@ -2,9 +2,11 @@
 #include "validate/tube_checkpoint.hpp"
 
 #include <fstream>
-#include <iterator>
+
+#include <nlohmann/json.hpp>
 
 #include "common/io/checkpoint.hpp"
+#include "common/run_folder.hpp"
 
 namespace hs::unresolved {
 namespace {
@@ -18,23 +20,22 @@ fs::path folder_of(const fs::path& archive) {
 
 constexpr const char* kFingerprintFile = "fingerprint.json";
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+/// Whether the folder's checkpoint was written under `fingerprint` (as the archived summary is keyed).
+bool written_under(const fs::path& dir, const std::string& fingerprint) {
+  std::ifstream in(dir / kFingerprintFile);
+  const nlohmann::json stored = nlohmann::json::parse(in, nullptr, false);
+  return !stored.is_discarded() && stored.value("fingerprint", "") == fingerprint;
 }
 
 }  // namespace
 
 TubePriesRestart tube_checkpoint(const fs::path& archive, const std::string& fingerprint) {
   const fs::path dir = folder_of(archive);
-  const bool same_tube = fs::exists(dir / kFingerprintFile) && read_text(dir / kFingerprintFile) == fingerprint;
-  if (same_tube && hs::common::Checkpoint::exists(dir)) return {.dir = dir, .resume = true};
+  if (written_under(dir, fingerprint) && hs::common::Checkpoint::exists(dir)) return {.dir = dir, .resume = true};
   fs::remove_all(dir);
   fs::create_directories(dir);
-  // Written before the first checkpoint: a checkpoint in this folder is always this fingerprint's.
-  const fs::path tmp = dir / (std::string(kFingerprintFile) + ".tmp");
-  std::ofstream(tmp, std::ios::binary) << fingerprint;
-  fs::rename(tmp, dir / kFingerprintFile);
+  // Written (atomically) before the first checkpoint: a checkpoint in this folder is always this fingerprint's.
+  hs::common::write_json(dir / kFingerprintFile, {{"fingerprint", fingerprint}});
   return {.dir = dir, .resume = false};
 }
 
