@@ -4,15 +4,19 @@
 
 #include <mpi.h>
 
+#include <utility>
 #include <vector>
 
 namespace hs::unresolved {
 
-/// Symmetric positive definite matrix in CSR form, rows 0..rows-1 of this rank.
+/// This rank's rows of a symmetric positive definite matrix in CSR form. The rows are distributed in rank order:
+/// rank k owns the global rows first_row .. first_row + rows - 1, right after rank k-1's (hypre's IJ layout), and
+/// the column indices are global. On one rank first_row is 0 and the matrix is the whole one.
 struct CsrMatrix {
   int rows = 0;
+  int first_row = 0;
   std::vector<int> row_ptr;     // size rows + 1
-  std::vector<int> cols;
+  std::vector<int> cols;        // global column indices
   std::vector<double> values;
 };
 
@@ -43,7 +47,8 @@ struct AmgReuse {
 
 /// PCG + BoomerAMG (hypre). The AMG hierarchy is built by set_matrix() and reused by every solve until
 /// the next set_matrix(), and by later matrices of the same pattern as AmgReuse allows.
-/// Needs MPI to be initialised (the hemoscale executable and the fvm tests do it).
+/// Every rank of the communicator calls set_matrix() and solve() with its own rows (collective calls); vectors hold
+/// this rank's rows only. Needs MPI to be initialised (the hemoscale executable and the fvm tests do it).
 class PressureSolver {
  public:
   explicit PressureSolver(MPI_Comm comm = MPI_COMM_WORLD, AmgReuse reuse = {});
@@ -52,7 +57,7 @@ class PressureSolver {
   PressureSolver& operator=(const PressureSolver&) = delete;
 
   void set_matrix(const CsrMatrix& a);
-  /// Solves A x = b from the initial guess in x; returns the number of PCG iterations.
+  /// Solves A x = b from the initial guess in x (this rank's rows of both); returns the number of PCG iterations.
   int solve(const std::vector<double>& b, std::vector<double>& x, const SolveTolerance& tol);
   [[nodiscard]] const CsrMatrix& matrix() const { return a_; }
   /// BoomerAMG set-ups so far, and set_matrix() calls that kept the hierarchy.
@@ -66,12 +71,18 @@ class PressureSolver {
   [[nodiscard]] bool can_reuse(const CsrMatrix& a) const;
   /// Writes a's values into the hypre matrix in place (same pattern).
   void update_values(const CsrMatrix& a);
+  /// Where each of a's entries sits in hypre's diagonal block (0..) or, after it, its off-diagonal block; empty
+  /// when an entry cannot be found (then no reuse).
+  [[nodiscard]] std::vector<int> entry_positions(const CsrMatrix& a) const;
+  /// ||b|| and ||b - A x|| over all ranks, with b and x already in hypre's vectors.
+  [[nodiscard]] std::pair<double, double> rhs_and_residual_norms();
 
   MPI_Comm comm_;
   AmgReuse reuse_;
   CsrMatrix a_;
   std::vector<double> setup_diagonal_;   // diagonal of the matrix the hierarchy was built on
-  std::vector<int> hypre_position_;      // where each CSR entry sits in hypre's diagonal block (empty: no reuse)
+  std::vector<int> hypre_position_;      // entry_positions() of the matrix set (empty: no reuse)
+  long global_rows_ = 0;
   int fresh_iterations_ = 0;             // most iterations of a solve while the hierarchy was fresh
   bool fresh_ = false;                   // the matrix now set is the one the hierarchy was built on
   bool stale_ = false;                   // a reused hierarchy passed the iteration bound
@@ -80,6 +91,7 @@ class PressureSolver {
   void* ij_matrix_ = nullptr;   // HYPRE_IJMatrix (hypre types stay out of this header)
   void* ij_b_ = nullptr;
   void* ij_x_ = nullptr;
+  void* ij_r_ = nullptr;        // residual work vector
   void* pcg_ = nullptr;         // HYPRE_Solver
   void* amg_ = nullptr;
 };
