@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `hemoscale bench fvm`: ns per cell-step of the PISO fluid on the 3D lid-driven cube of
 // ../shared/bench/openfoam (n^3 cells, U_lid = 1 m/s, nu = 0.01 m^2/s, dt = 0.05/n s, 2 correctors,
-// p tolerance 1e-6 relTol 0.05), and of icoFoam on the same problem when OpenFOAM is installed.
+// p tolerance 1e-6 relTol 0.05), and of icoFoam on the same problem when OpenFOAM is installed, with PCG+DIC and with
+// GAMG for the pressure: the faster of the two is the peer.
 #include "bench/fvm_bench.hpp"
 #include "bench/bench_targets.hpp"
 
@@ -102,9 +103,10 @@ std::optional<fs::path> openfoam_script() {
   return std::nullopt;
 }
 
-/// One icoFoam run through the shared script; nothing when it fails.
-std::optional<Measurement> run_openfoam(const fs::path& script, int n, int steps) {
-  const std::string cmd = fmt::format("bash '{}' {} 1 {} icoFoam PCG /tmp/hs-fvm-bench-openfoam 2>&1", script.string(), n, steps);
+/// One icoFoam run through the shared script with the pressure solver named (PCG or GAMG); nothing when it fails.
+std::optional<Measurement> run_openfoam(const fs::path& script, int n, int steps, const std::string& pressure_solver) {
+  const std::string cmd = fmt::format("bash '{}' {} 1 {} icoFoam {} /tmp/hs-fvm-bench-openfoam 2>&1", script.string(), n,
+                                      steps, pressure_solver);
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
   if (!pipe) return std::nullopt;
   std::string out;
@@ -157,28 +159,39 @@ int run_fvm_bench(const hs::common::TaskOptions& options) {
   j["openfoam_ns_per_cell_step"] = nullptr;
   j["openfoam_pressure_iterations_per_step"] = nullptr;
   if (const auto script = openfoam_script()) {
-    std::vector<double> of;
-    std::vector<double> of_p;
-    for (int r = 0; r < kRepetitions; ++r) {
-      if (const auto m = run_openfoam(*script, n, steps)) {
-        of.push_back(m->ns_per_cell_step);
-        of_p.push_back(m->pressure_iterations_per_step);
+    // icoFoam with its best pressure solver (issue #28): PCG+DIC (the tutorial's) and GAMG (Gauss-Seidel smoother),
+    // both at the same tolerances as ours (1e-6, relTol 0.05; 0 in the final corrector); the faster one is the peer.
+    std::optional<double> best;
+    for (const std::string psolver : {"PCG", "GAMG"}) {
+      std::vector<double> of;
+      std::vector<double> of_p;
+      for (int r = 0; r < kRepetitions; ++r) {
+        if (const auto m = run_openfoam(*script, n, steps, psolver)) {
+          of.push_back(m->ns_per_cell_step);
+          of_p.push_back(m->pressure_iterations_per_step);
+        }
+      }
+      if (of.empty()) continue;
+      const std::string key = psolver == "PCG" ? "pcg" : "gamg";
+      std::printf("icoFoam (OpenFOAM, p by %s): %.1f ns/cell-step CPU, %.1f p iterations/step; ours %.2fx faster\n",
+                  psolver.c_str(), median(of), median(of_p), median(of) / median(ours));
+      j["openfoam_" + key + "_ns_per_cell_step"] = median(of);
+      j["openfoam_" + key + "_pressure_iterations_per_step"] = median(of_p);
+      if (!best || median(of) < *best) {
+        best = median(of);
+        j["openfoam_ns_per_cell_step"] = median(of);
+        j["openfoam_pressure_iterations_per_step"] = median(of_p);
+        j["openfoam_pressure_solver"] = psolver;
       }
     }
-    if (!of.empty()) {
-      std::printf("icoFoam (OpenFOAM, PCG+DIC): %.1f ns/cell-step CPU, %.1f p iterations/step; speed-up %.2fx\n", median(of),
-                  median(of_p), median(of) / median(ours));
-      j["openfoam_ns_per_cell_step"] = median(of);
-      j["openfoam_pressure_iterations_per_step"] = median(of_p);
-      j["speedup_vs_openfoam"] = median(of) / median(ours);
-    }
+    if (best) j["speedup_vs_openfoam"] = *best / median(ours);
   } else {
     std::printf("icoFoam: not installed (Debian package openfoam) or run_cavity3d.sh not found: no comparison\n");
   }
   hs::common::CheckList checks;
   expect_at_least(checks, options, "speedup_vs_openfoam",
                   j.contains("speedup_vs_openfoam") ? std::optional<double>(j["speedup_vs_openfoam"].get<double>()) : std::nullopt,
-                  3.0, "issue #28: FVM >= 3x icoFoam per cell-step");
+                  3.0, "issue #28: FVM >= 3x icoFoam with its best pressure solver per cell-step");
   checks.write_to(j);
   j["provenance"] = hs::common::provenance();
   if (options.json_file) hs::common::write_json(*options.json_file, j);
