@@ -22,6 +22,7 @@
 #include "common/check_list.hpp"
 #include "common/run_folder.hpp"
 #include "regression/feynman_table.hpp"
+#include "regression/infix.hpp"
 #include "regression/model_selection.hpp"
 #include "regression/recovery_judge.hpp"
 
@@ -152,6 +153,25 @@ Plan make_plan(bool quick, int threads) {
   return p;
 }
 
+/// An archived search's verdict by the current judge: the search is not repeated, its printed formula is judged
+/// again when an older judge wrote the verdict (a formula that does not parse keeps its verdict).
+nlohmann::json judged_again(nlohmann::json j, const hsr::FeynmanEquation& eq, double noise) {
+  if (j.value("judge", 1) >= hsr::kRecoveryJudgeVersion) return j;
+  try {
+    const hsr::RecoveryVerdict v = hsr::judge_recovery(eq, hsr::parse_infix(j.at("expression").get<std::string>(), eq.names), noise);
+    j["exact"] = v.exact;
+    j["exact_strict"] = v.exact_strict;
+    j["symbolic"] = v.symbolic;
+    j["numeric"] = v.numeric;
+    j["r2_test"] = v.r2_test;
+    j["max_rel_error"] = v.max_rel_error;
+    j["judge"] = hsr::kRecoveryJudgeVersion;
+  } catch (const hsr::ParseError&) {
+    // not a formula of this table's variables: the archived verdict stands
+  }
+  return j;
+}
+
 }  // namespace
 
 std::vector<FeynmanSearchId> feynman_searches(bool quick) {
@@ -207,7 +227,7 @@ int run_feynman_bench(const hs::common::TaskOptions& options) {
           const std::string key = run_key(c.name, eq.id, noise, seed);
           ++finished;
           if (const auto it = done.find(key + "#" + fp); it != done.end()) {
-            results.push_back(it->second);
+            results.push_back(judged_again(it->second, eq, noise));
             continue;
           }
           const hsr::FeynmanSample data = noisy_sample(eq, noise, seed);
@@ -220,7 +240,8 @@ int run_feynman_bench(const hs::common::TaskOptions& options) {
           const nlohmann::json j{{"key", key}, {"fingerprint", fp}, {"config", c.name}, {"id", eq.id},
                                  {"noise", noise}, {"seed", seed}, {"exact", v.exact}, {"exact_strict", v.exact_strict}, {"symbolic", v.symbolic},
                                  {"numeric", v.numeric}, {"r2_test", v.r2_test}, {"max_rel_error", v.max_rel_error},
-                                 {"seconds", seconds}, {"expression", v.expression}, {"formula", eq.formula}};
+                                 {"seconds", seconds}, {"expression", v.expression}, {"formula", eq.formula},
+                                 {"judge", hsr::kRecoveryJudgeVersion}};
           if (append.is_open()) append << j.dump() << "\n" << std::flush;
           results.push_back(j);
           ++computed;

@@ -9,6 +9,7 @@
 #include "regression/data_view.hpp"
 #include "regression/infix.hpp"
 #include "regression/metrics.hpp"
+#include "regression/normal_form.hpp"
 #include "regression/polynomial.hpp"
 #include "regression/simplify.hpp"
 
@@ -57,9 +58,13 @@ double constant_tolerance(double noise_level) { return noise_level > 0.0 ? 1e-3 
 bool same_form(const Expression& model, const Expression& truth, double tolerance, bool srbench_slack) {
   const Expression m = canonical(model, tolerance), t = canonical(truth, tolerance);
   if (equal_within(m, t, tolerance)) return true;
+  // The sum-of-products normal form: the operand order, grouping, division and roots the simplifier keeps.
+  const NormalForm mf = normal_form(model), tf = normal_form(truth);
+  if (same_normal_form(mf, tf, tolerance)) return true;
   if (!srbench_slack) return false;
   for (const bool additive : {true, false}) {
     if (equal_within(without_root_constant(m, additive), without_root_constant(t, additive), tolerance)) return true;
+    if (same_normal_form(without_root_constant(mf, additive), without_root_constant(tf, additive), tolerance)) return true;
   }
   return false;
 }

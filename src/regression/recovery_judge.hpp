@@ -19,7 +19,8 @@ namespace hs::regression {
 /// Symbolic equivalence: both expressions are put in canonical form (algebraic simplification, polynomial
 /// expansion, constants within `tolerance` of a short fraction snapped to it) and must be equal node by node,
 /// every remaining constant within
-/// `tolerance` (relative) of its counterpart. With `srbench_slack`, SRBench's rule ("y - y_hat = a or
+/// `tolerance` (relative) of its counterpart; or else their sum-of-products normal forms (normal_form.hpp: operand
+/// order, grouping, division and roots taken out) must be equal, every number within `tolerance`. With `srbench_slack`, SRBench's rule ("y - y_hat = a or
 /// y / y_hat = b"): one additive or one multiplicative constant at the root of each may differ freely, so
 /// 0.52 k x^2 counts as 1/2 k x^2 (the rule the SRBench rates of issue #29 were measured with).
 [[nodiscard]] bool same_form(const Expression& model, const Expression& truth, double tolerance, bool srbench_slack);
@@ -35,6 +36,9 @@ struct RecoveryVerdict {
   bool exact = false;         // symbolic || numeric: SRBench's "symbolic solution"
   bool exact_strict = false;  // strict || numeric
 };
+
+/// The judge's rules change (2: the normal form added); a verdict archived by an older one is judged again.
+inline constexpr int kRecoveryJudgeVersion = 2;
 
 /// Judges `model`, found on data with Gaussian noise of `noise_level` std(y), against the table's equation.
 [[nodiscard]] RecoveryVerdict judge_recovery(const FeynmanEquation& eq, const Expression& model, double noise_level);

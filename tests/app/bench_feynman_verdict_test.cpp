@@ -3,10 +3,14 @@
 // 0.01) and exits 1 below them. The full table takes hours, so the searches' results are given to it the way an
 // interrupted run gives them: an archive (FILE.runs.jsonl) holding every search under the bench's own keys and
 // fingerprints (bench::feynman_searches), which the run reuses instead of searching. The recovery counts in it are
-// chosen at the targets' edges; what is tested is the verdict and the exit code of the full run, end to end.
+// chosen at the targets' edges (written as the current judge's, so they are not judged again); what is tested is the
+// verdict and the exit code of the full run, end to end.
 #include <gtest/gtest.h>
 
 #include "bench/feynman_bench.hpp"
+#include "regression/feynman_table.hpp"
+#include "regression/infix.hpp"
+#include "regression/recovery_judge.hpp"
 #include "support/run_command.hpp"
 
 #include <filesystem>
@@ -22,7 +26,9 @@ namespace {
 
 /// An archive where "hemoscale" recovers the first `noise0` equations of the table at noise 0 and the first
 /// `noise001` at noise 0.01 (every seed), nothing at noise 0.001; gplearn recovers nothing.
-fs::path write_archive(const std::string& name, int noise0, int noise001) {
+/// `old_judge_row`: one more noise-0.01 search of "hemoscale" (seed 1, the table's equation number `noise001`) is
+/// archived as not recovered by an older judge (no "judge" field), its formula the equation's own.
+fs::path write_archive(const std::string& name, int noise0, int noise001, bool old_judge_row = false) {
   const fs::path dir = fs::temp_directory_path() / ("hs_bench_feynman_verdict_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -32,11 +38,23 @@ fs::path write_archive(const std::string& name, int noise0, int noise001) {
     const int i = index[s.key.substr(0, s.key.find('|')) + std::to_string(s.noise) + std::to_string(s.seed)]++;
     const int recovered = s.config != "hemoscale" ? 0 : s.noise == 0.0 ? noise0 : s.noise == 0.01 ? noise001 : 0;
     const bool exact = i < recovered;
+    if (old_judge_row && s.config == "hemoscale" && s.noise == 0.01 && s.seed == 1 && i == noise001) {
+      const auto table = hs::regression::read_feynman_table(HS_SOURCE_DIR "/data/reference/feynman_ai100.csv");
+      const auto& eq = table.at(static_cast<std::size_t>(i));
+      out << nlohmann::json{{"key", s.key}, {"fingerprint", s.fingerprint}, {"config", s.config}, {"id", s.equation_id},
+                            {"noise", s.noise}, {"seed", s.seed}, {"exact", false}, {"exact_strict", false},
+                            {"symbolic", false}, {"numeric", false}, {"r2_test", 0.5}, {"max_rel_error", 1.0},
+                            {"seconds", 1.0}, {"expression", hs::regression::to_infix(eq.truth, eq.names)},
+                            {"formula", eq.formula}}
+                 .dump()
+          << "\n";
+      continue;
+    }
     out << nlohmann::json{{"key", s.key}, {"fingerprint", s.fingerprint}, {"config", s.config}, {"id", s.equation_id},
                           {"noise", s.noise}, {"seed", s.seed}, {"exact", exact}, {"exact_strict", exact},
                           {"symbolic", exact}, {"numeric", exact}, {"r2_test", exact ? 1.0 : 0.5},
                           {"max_rel_error", exact ? 0.0 : 1.0}, {"seconds", 1.0}, {"expression", "x"},
-                          {"formula", "x"}}
+                          {"formula", "x"}, {"judge", hs::regression::kRecoveryJudgeVersion}}
                .dump()
         << "\n";
   }
@@ -75,4 +93,15 @@ TEST(BenchFeynmanVerdict, TheFullRunExitsOneJustBelowTheTargetAndZeroAtIt) {
   const nlohmann::json b = read_json(at);
   EXPECT_EQ(b.at("searches_computed_this_run").get<int>(), 0);
   EXPECT_TRUE(b.at("passed").get<bool>());
+}
+
+TEST(BenchFeynmanVerdict, AVerdictOfAnOlderJudgeIsJudgedAgainWithoutSearching) {
+  // 19 of 100 equations at noise 0.01 in every seed (57 of 300 searches), plus one archived by an older judge as
+  // missed although its formula is the equation's own: judged again on load, it counts (58 of 300).
+  const fs::path json = write_archive("old_judge", 60, 19, true);
+  const auto run = run_full(json);
+  ASSERT_NE(run.code, 124) << "the bench searched instead of resuming from the archive";
+  const nlohmann::json a = read_json(json);
+  EXPECT_EQ(a.at("searches_computed_this_run").get<int>(), 0);
+  EXPECT_NEAR(a.at("exact_percent_noise0.01").get<double>(), 100.0 * 58.0 / 300.0, 1e-9);
 }

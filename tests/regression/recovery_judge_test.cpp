@@ -53,3 +53,41 @@ TEST(RecoveryJudge, ProtectedArcsineNeverGivesNan) {
   EXPECT_DOUBLE_EQ(hsr::apply(hsr::Op::Asin, -7.0, 0.0), std::asin(-1.0));
   EXPECT_EQ(hsr::op_from_name("asin"), hsr::Op::Asin);
 }
+
+namespace {
+
+const std::vector<std::string> kFeynmanNames{"x1", "x2", "x3", "y1", "y2", "y3", "n", "d", "lambd", "V", "kb", "T",
+                                             "pr", "gamma", "rho", "q1", "r", "epsilon"};
+
+hsr::Expression feynman(const std::string& text) { return hsr::parse_infix(text, kFeynmanNames); }
+
+}  // namespace
+
+TEST(RecoveryJudge, OperandOrderGroupingAndDivisionDoNotHideTheFormula) {
+  // Forms the search printed in the noise-0.01 run of 2026-12-02 (bench/results/2026-12-02_feynman.runs.jsonl)
+  // that the simplifier's canonical form did not match: the same formulas, other operand orders and groupings.
+  const double noisy = hsr::constant_tolerance(0.01);
+  const auto i11_19 = feynman("x1*y1+x2*y2+x3*y3");
+  EXPECT_TRUE(hsr::same_form(feynman("x3*y3 + y2*x2 + y1*x1"), i11_19, 1e-6, false));
+  EXPECT_TRUE(hsr::same_form(feynman("-0.002566 + 1.0000725*(x3*y3 + y2*x2 + y1*x1)"), i11_19, noisy, true));
+  EXPECT_FALSE(hsr::same_form(feynman("-0.002566 + 1.0000725*(x3*y3 + y2*x2 + y1*x1)"), i11_19, noisy, false));
+  EXPECT_TRUE(hsr::same_form(feynman("asin(lambd/n/d)"), feynman("asin(lambd/(n*d))"), 1e-6, false));        // I.30.5
+  EXPECT_TRUE(hsr::same_form(feynman("n/(V/kb/T)"), feynman("n*kb*T/V"), 1e-6, false));                      // I.39.22
+  EXPECT_TRUE(hsr::same_form(feynman("sqrt(pr*(gamma/rho))"), feynman("sqrt(gamma*pr/rho)"), 1e-6, false));  // I.47.23
+  // I.12.4: 1/(4 pi) = 0.0795775 fitted as 0.0795467 (3.9e-4 off: inside the noisy tolerance, not the noise-free one).
+  const auto i12_4 = feynman("q1*r/(4*3.141592653589793*epsilon*r^3)");
+  EXPECT_TRUE(hsr::same_form(feynman("0.07954671729541195*(q1/r/epsilon/r)"), i12_4, noisy, false));
+  EXPECT_FALSE(hsr::same_form(feynman("0.07954671729541195*(q1/r/epsilon/r)"), i12_4, 1e-6, false));
+}
+
+TEST(RecoveryJudge, TheNormalFormStillTellsOtherFormulasApart) {
+  // Negative controls for the normal form: a term missing, a divisor moved into the numerator, a root over
+  // part of a product, a power off by one, a constant off by 1 %, each a different function.
+  const double noisy = hsr::constant_tolerance(0.01);
+  EXPECT_FALSE(hsr::same_form(feynman("x1*y1 + x2*y2"), feynman("x1*y1+x2*y2+x3*y3"), noisy, true));
+  EXPECT_FALSE(hsr::same_form(feynman("asin(lambd/n*d)"), feynman("asin(lambd/(n*d))"), noisy, true));
+  EXPECT_FALSE(hsr::same_form(feynman("sqrt(pr*gamma)/rho"), feynman("sqrt(gamma*pr/rho)"), noisy, true));
+  EXPECT_FALSE(hsr::same_form(feynman("q1/r/epsilon"), feynman("q1*r/(epsilon*r^3)"), noisy, true));
+  EXPECT_FALSE(hsr::same_form(feynman("x1*y1 + 1.01*x2*y2"), feynman("x1*y1+x2*y2"), noisy, true));
+  EXPECT_FALSE(hsr::same_form(feynman("x1*y1 - x2*y2"), feynman("x1*y1+x2*y2"), noisy, true));
+}
