@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -35,8 +36,9 @@ Vec3 unit(int a) {
 
 }  // namespace
 
-FvmGrid::FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec)
-    : shape_(shape), spec_(spec), dx_m_(spec.dx_m), lo_(spec.box_m.lo) {
+FvmGrid::FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec,
+                 const hs::common::CartesianDecomposition* slabs)
+    : shape_(shape), spec_(spec), slabs_(slabs), dx_m_(spec.dx_m), lo_(spec.box_m.lo) {
   if (!(dx_m_ > 0.0)) throw hs::common::ConfigError(fmt::format("FVM grid: dx_m = {} must be > 0", dx_m_));
   for (int a = 0; a < 3; ++a) {
     const double extent = spec.box_m.hi[a] - spec.box_m.lo[a];
@@ -60,6 +62,17 @@ FvmGrid::FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec)
       }
     }
   }
+  global_n_ = n_;
+  if (slabs_ != nullptr) {
+    // A decomposition of another grid, or one split across x or y, is a caller's bug, not an input error.
+    if (slabs_->global_nodes() != n_ || slabs_->ranks_per_axis()[0] != 1 || slabs_->ranks_per_axis()[1] != 1 ||
+        slabs_->periodic()[2] != periodic_[2]) {
+      throw std::invalid_argument("FvmGrid: the decomposition must split this grid's cells along z only");
+    }
+    n_[2] = slabs_->layout().n[2];
+    first_plane_ = slabs_->offset()[2];
+    lo_.z += first_plane_ * dx_m_;
+  }
   set_up_openings();
   for (int c = 0; c < 3; ++c) {
     classify_nodes(c);
@@ -71,13 +84,36 @@ FvmGrid::FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec)
 
 int FvmGrid::node_count(int c, int a) const {
   const int n = n_[static_cast<std::size_t>(a)];
-  return (c == a && !periodic(a)) ? n + 1 : n;
+  if (c != a) return n;
+  if (split_along(a)) return slabs_->on_global_face(a, 1) ? n + 1 : n;   // else face n is the next block's face 0
+  return periodic(a) ? n : n + 1;
 }
 
-bool FvmGrid::in_range(int c, int a, int idx) const { return idx >= 0 && idx < node_count(c, a); }
+bool FvmGrid::in_range(int c, int a, int idx) const {
+  if (split_along(a)) {   // a neighbouring block's node in the ghost layer counts, a node beyond a box face does not
+    const int first = slabs_->on_global_face(a, 0) ? 0 : -1;
+    const int end = slabs_->on_global_face(a, 1) ? node_count(c, a) : n_[static_cast<std::size_t>(a)] + 1;
+    return idx >= first && idx < end;
+  }
+  return idx >= 0 && idx < node_count(c, a);
+}
+
+int FvmGrid::box_face(int c, int along) const {
+  if (periodic(c)) return -1;
+  const int n = n_[static_cast<std::size_t>(c)];
+  if (split_along(c)) {
+    if (along == 0 && slabs_->on_global_face(c, 0)) return 0;
+    if (along == n && slabs_->on_global_face(c, 1)) return 1;
+    return -1;
+  }
+  return along == 0 ? 0 : along == n ? 1 : -1;
+}
 
 Vec3 FvmGrid::cell_centre_m(int i, int j, int k) const {
-  return {lo_.x + (i + 0.5) * dx_m_, lo_.y + (j + 0.5) * dx_m_, lo_.z + (k + 0.5) * dx_m_};
+  // From the box's corner and the global index, so that a block computes every position of the whole grid's to
+  // the bit (its geometry is then the whole grid's, sliced).
+  const Vec3& o = spec_.box_m.lo;
+  return {o.x + (i + 0.5) * dx_m_, o.y + (j + 0.5) * dx_m_, o.z + (k + first_plane_ + 0.5) * dx_m_};
 }
 
 Vec3 FvmGrid::node_position_m(int c, int i, int j, int k) const {
@@ -90,10 +126,11 @@ Vec3 FvmGrid::wrap(const Vec3& x_m) const {
   Vec3 x = x_m;
   for (int a = 0; a < 3; ++a) {
     if (!periodic(a)) continue;
-    const double length = n_[static_cast<std::size_t>(a)] * dx_m_;
-    const double t = x[a] - lo_[a];
+    const double lo = spec_.box_m.lo[a];   // the whole box's period, also on a block
+    const double length = global_n_[static_cast<std::size_t>(a)] * dx_m_;
+    const double t = x[a] - lo;
     if (t >= 0.0 && t < length) continue;   // inside already (nearly always): no division, the point unchanged
-    x[a] = lo_[a] + std::fmod(std::fmod(t, length) + length, length);
+    x[a] = lo + std::fmod(std::fmod(t, length) + length, length);
   }
   return x;
 }
@@ -123,8 +160,8 @@ void FvmGrid::classify_nodes(int c) {
         if (!fluid) continue;
         NodeKind nk = NodeKind::active;
         const int along = std::array<int, 3>{i, j, k}[static_cast<std::size_t>(c)];
-        if (!periodic(c) && (along == 0 || along == n_[static_cast<std::size_t>(c)])) {
-          const SideCondition& s = side(c, along == 0 ? 0 : 1);
+        if (const int face = box_face(c, along); face >= 0) {
+          const SideCondition& s = side(c, face);
           if (!spec_.openings.empty() && classify_opening_node(c, {i, j, k}, p)) continue;
           if (s.type == SideType::wall) {
             nk = NodeKind::fixed;
@@ -138,11 +175,8 @@ void FvmGrid::classify_nodes(int c) {
       }
     }
   }
-  for (int a = 0; a < 3; ++a) {
-    if (!periodic(a)) continue;
-    kind.fill_periodic(a, n_[static_cast<std::size_t>(a)]);
-    fixed.fill_periodic(a, n_[static_cast<std::size_t>(a)]);
-  }
+  fill_ghosts(kind);
+  fill_ghosts(fixed);
 }
 
 void FvmGrid::compute_apertures(int c) {
@@ -185,11 +219,8 @@ void FvmGrid::compute_apertures(int c) {
       }
     }
   }
-  for (int a = 0; a < 3; ++a) {
-    if (!periodic(a)) continue;
-    ap.fill_periodic(a, n_[static_cast<std::size_t>(a)]);
-    area.fill_periodic(a, n_[static_cast<std::size_t>(a)]);
-  }
+  fill_ghosts(ap);
+  fill_ghosts(area);
 }
 
 void FvmGrid::compute_fluid_fractions() {
@@ -214,9 +245,7 @@ void FvmGrid::compute_fluid_fractions() {
       }
     }
   }
-  for (int a = 0; a < 3; ++a) {
-    if (periodic(a)) fluid_fraction_.fill_periodic(a, n_[static_cast<std::size_t>(a)]);
-  }
+  fill_ghosts(fluid_fraction_);
 }
 
 NodeLink FvmGrid::link(int c, std::array<int, 3> node, int dir) const {
@@ -226,7 +255,7 @@ NodeLink FvmGrid::link(int c, std::array<int, 3> node, int dir) const {
   const Vec3 pm = p + (s * dx_m_) * unit(a);
   std::array<int, 3> m = node;
   m[static_cast<std::size_t>(a)] += s;
-  if (periodic(a)) {
+  if (periodic(a) && !split_along(a)) {   // split: the neighbouring block's node is in the ghost layer
     const int count = node_count(c, a);
     m[static_cast<std::size_t>(a)] = (m[static_cast<std::size_t>(a)] % count + count) % count;
   }

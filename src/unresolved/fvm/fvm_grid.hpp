@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "common/geometry/opening_condition.hpp"
+#include "common/parallel/cartesian_decomposition.hpp"
 #include "common/geometry/shape.hpp"
 #include "common/vec3.hpp"
 #include "unresolved/fvm/block_field.hpp"
+#include "unresolved/fvm/block_halo.hpp"
 
 namespace hs::unresolved {
 
@@ -76,11 +78,21 @@ struct NodeLink {
 /// (aperture(c, ...) below). Both are second order where a staircase wall is first order.
 class FvmGrid {
  public:
-  FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec);
+  /// `slabs`: this rank holds one block of `slabs`, a decomposition of the grid's cells split along z only
+  /// (the distributed FVM, docs/cfd-dem.md "Distributed CFD-DEM"): cells() and every field are the block's, with
+  /// the neighbouring blocks' planes in the ghost layer along z; a face node on a plane between two blocks belongs
+  /// to the block above. nullptr: the whole grid on this rank.
+  FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec,
+          const hs::common::CartesianDecomposition* slabs = nullptr);
 
   [[nodiscard]] double dx_m() const { return dx_m_; }
   [[nodiscard]] const std::array<int, 3>& cells() const { return n_; }
+  /// The whole grid's cells and the global index of this block's first plane along z (cells() and 0 without slabs).
+  [[nodiscard]] const std::array<int, 3>& global_cells() const { return global_n_; }
+  [[nodiscard]] int first_plane() const { return first_plane_; }
+  [[nodiscard]] const hs::common::CartesianDecomposition* slabs() const { return slabs_; }
   [[nodiscard]] long cell_count() const { return static_cast<long>(n_[0]) * n_[1] * n_[2]; }
+  /// The corner of this block (the box's corner without slabs).
   [[nodiscard]] const hs::common::Vec3& origin_m() const { return lo_; }
   [[nodiscard]] bool periodic(int axis) const { return periodic_[static_cast<std::size_t>(axis)]; }
   [[nodiscard]] const SideCondition& side(int axis, int high) const { return spec_.sides[static_cast<std::size_t>(2 * axis + high)]; }
@@ -92,7 +104,7 @@ class FvmGrid {
   [[nodiscard]] const hs::common::OpeningCondition* opening_at(int axis, int high, const hs::common::Vec3& x_m) const;
 
   /// Number of velocity nodes of component c along axis a (faces along c, cells otherwise; a periodic
-  /// axis has its last face identified with the first).
+  /// axis has its last face identified with the first; a block's last face is the next block's first).
   [[nodiscard]] int node_count(int c, int a) const;
   [[nodiscard]] hs::common::Vec3 cell_centre_m(int i, int j, int k) const;
   [[nodiscard]] hs::common::Vec3 node_position_m(int c, int i, int j, int k) const;
@@ -125,12 +137,29 @@ class FvmGrid {
   bool classify_opening_node(int c, std::array<int, 3> ijk, const hs::common::Vec3& p);
   void finish_openings();
   [[nodiscard]] bool in_range(int c, int a, int idx) const;
+  /// The side of the domain box (0 low, 1 high) that face node index `along` of component c lies on, or -1.
+  [[nodiscard]] int box_face(int c, int along) const;
+  [[nodiscard]] bool split_along(int a) const { return a == 2 && slabs_ != nullptr; }
+  /// Ghost layers: periodic wrap along x and y, the neighbouring blocks' planes (or the periodic wrap) along z.
+  template <typename T>
+  void fill_ghosts(BlockField<T>& f) const {
+    for (int a = 0; a < 3; ++a) {
+      if (split_along(a)) {
+        exchange_halo(f, *slabs_, a);
+      } else if (periodic(a)) {
+        f.fill_periodic(a, n_[static_cast<std::size_t>(a)]);
+      }
+    }
+  }
 
   const hs::common::Shape& shape_;
   FvmGridSpec spec_;
+  const hs::common::CartesianDecomposition* slabs_;
   double dx_m_;
-  hs::common::Vec3 lo_;
-  std::array<int, 3> n_{};
+  hs::common::Vec3 lo_;                   // this block's origin (the box's without slabs)
+  std::array<int, 3> n_{};                // this block's cells
+  std::array<int, 3> global_n_{};
+  int first_plane_ = 0;
   std::array<bool, 3> periodic_{};
   std::array<BlockField<std::uint8_t>, 3> kind_;
   std::array<BlockField<double>, 3> fixed_;
@@ -145,7 +174,10 @@ class FvmGrid {
 template <typename T>
 void fill_cell_field_ghosts(const FvmGrid& grid, BlockField<T>& field) {
   for (int a = 0; a < 3; ++a) {
-    if (grid.periodic(a)) {
+    if (grid.slabs() != nullptr && a == 2) {
+      if (grid.slabs()->on_global_face(2, 0) || grid.slabs()->on_global_face(2, 1)) field.fill_zero_gradient(a);
+      exchange_halo(field, *grid.slabs(), a);   // the planes between blocks (and the periodic images)
+    } else if (grid.periodic(a)) {
       field.fill_periodic(a, grid.cells()[static_cast<std::size_t>(a)]);
     } else {
       field.fill_zero_gradient(a);

@@ -93,10 +93,16 @@ void FvmGrid::finish_openings() {
   for (const OpeningCondition& oc : spec_.openings) {
     if (oc.type == OpeningFlowType::flow_rate_inlet) inflow_m3_s += oc.flow_rate_m3_s;
   }
+  // On slabs an opening's nodes may lie on several blocks: its node count and flux are summed over all of them.
+  const auto global_sum = [&](double local) {
+    double all = local;
+    if (slabs_ != nullptr) MPI_Allreduce(&local, &all, 1, MPI_DOUBLE, MPI_SUM, slabs_->comm());
+    return all;
+  };
   for (std::size_t k = 0; k < spec_.openings.size(); ++k) {
     const OpeningCondition& oc = spec_.openings[k];
     const OpeningNodes& on = opening_nodes_[k];
-    if (on.nodes.empty()) {
+    if (global_sum(static_cast<double>(on.nodes.size())) == 0.0) {
       throw hs::common::ConfigError(fmt::format(
           "FVM grid: opening '{}' (radius_m = {:.6g}) holds no face node of the grid (dx_m = {:.6g}): a face centre "
           "belongs to an opening when it lies in the fluid within the disc; give the disc a radius of a cell or more",
@@ -105,8 +111,9 @@ void FvmGrid::finish_openings() {
     if (oc.type == OpeningFlowType::pressure_outlet) continue;
     auto& fixed = fixed_[static_cast<std::size_t>(on.axis)];
     const auto& ap = aperture_[static_cast<std::size_t>(on.axis)];
-    double flux = 0.0;
-    for (const std::size_t idx : on.nodes) flux += ap[idx] * dx_m_ * dx_m_ * std::abs(fixed[idx]);
+    double local_flux = 0.0;
+    for (const std::size_t idx : on.nodes) local_flux += ap[idx] * dx_m_ * dx_m_ * std::abs(fixed[idx]);
+    const double flux = global_sum(local_flux);
     if (!(flux > 0.0)) {
       throw hs::common::ConfigError(fmt::format(
           "FVM grid: opening '{}' has no open face inside its disc at dx_m = {:.6g} (every face node sits on its rim); "
@@ -116,11 +123,7 @@ void FvmGrid::finish_openings() {
         oc.type == OpeningFlowType::flow_rate_inlet ? oc.flow_rate_m3_s : oc.flow_fraction * inflow_m3_s;
     for (const std::size_t idx : on.nodes) fixed[idx] *= target / flux;
   }
-  for (int c = 0; c < 3; ++c) {
-    for (int a = 0; a < 3; ++a) {
-      if (periodic(a)) fixed_[static_cast<std::size_t>(c)].fill_periodic(a, n_[static_cast<std::size_t>(a)]);
-    }
-  }
+  for (int c = 0; c < 3; ++c) fill_ghosts(fixed_[static_cast<std::size_t>(c)]);
 }
 
 }  // namespace hs::unresolved

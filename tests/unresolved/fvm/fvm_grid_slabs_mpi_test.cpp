@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// The FVM grid on z-slabs (issue #28, step 1 of docs/cfd-dem.md "Distributed CFD-DEM") at np 1, 2 and 4: each
+// block's geometry is the whole grid's, sliced, bit for bit: node kinds, prescribed values (the inlet's profile scaled
+// to its flow rate included), apertures, open areas, fluid fractions, the ghost planes the neighbouring blocks send,
+// and the wall links of every active node. The whole grid, built on every rank without slabs, is the reference.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <array>
+#include <numbers>
+#include <string>
+
+#include "common/geometry/opening_condition.hpp"
+#include "common/geometry/tube.hpp"
+#include "common/parallel/cartesian_decomposition.hpp"
+#include "unresolved/fvm/fvm_grid.hpp"
+#include "unresolved/fvm/fvm_solver.hpp"
+
+namespace hs::unresolved {
+namespace {
+
+// The tube-pries grid of `validate pries` at D = 30 um: 10 cells across, 2 diameters long (20 planes: 5 a block at
+// np 4). The tube is narrower than the box and tilted, so every plane cuts it differently: a block that read a wrong
+// plane (its own instead of its neighbour's, or one off) would be seen.
+constexpr double kDiameter = 30e-6;
+constexpr double kLength = 60e-6;
+constexpr int kAcross = 10;
+constexpr hs::common::Vec3 kStart{-3e-6, -1e-6, 0.0};
+constexpr hs::common::Vec3 kEnd{3e-6, 2e-6, kLength};
+constexpr double kRadius = 0.4 * kDiameter;
+
+hs::common::Tube tube() { return hs::common::Tube({.start_m = kStart, .end_m = kEnd, .radius_m = kRadius}); }
+
+FvmGridSpec spec(bool open) {
+  const double r = 0.5 * kDiameter;
+  FvmGridSpec s{.box_m = {{-r, -r, 0.0}, {r, r, kLength}}, .dx_m = kDiameter / kAcross, .sides = {}};
+  if (!open) {
+    s.sides[4].type = SideType::periodic;
+    s.sides[5].type = SideType::periodic;
+    return s;
+  }
+  // The open tube: a flow-rate inlet at z = 0 and a pressure outlet at z = L (cases/unresolved/tube-open's kind).
+  const hs::common::Opening in{.name = "in", .kind = hs::common::OpeningKind::inlet, .centre_m = kStart,
+                               .normal = {0, 0, -1}, .radius_m = kRadius};
+  const hs::common::Opening out{.name = "out", .kind = hs::common::OpeningKind::outlet, .centre_m = kEnd,
+                                .normal = {0, 0, 1}, .radius_m = kRadius};
+  s.openings = {hs::common::flow_rate_inlet(in, std::numbers::pi * kRadius * kRadius * 1e-3),
+                hs::common::pressure_outlet(out, 0.0)};
+  return s;
+}
+
+/// Points of `field` on this block (ghosts included) that differ from the whole grid's at the same global place.
+template <typename T>
+int differences(const BlockField<T>& block, const BlockField<T>& whole, int first_plane) {
+  const auto& n = block.cells();
+  int count = 0;
+  for (int k = -1; k <= n[2] + 1; ++k) {
+    for (int j = -1; j <= n[1] + 1; ++j) {
+      for (int i = -1; i <= n[0] + 1; ++i) {
+        if (block(i, j, k) != whole(i, j, first_plane + k)) ++count;
+      }
+    }
+  }
+  return count;
+}
+
+int link_differences(const FvmGrid& block, const FvmGrid& whole, int c) {
+  int count = 0;
+  for (int k = 0; k < block.node_count(c, 2); ++k) {
+    for (int j = 0; j < block.node_count(c, 1); ++j) {
+      for (int i = 0; i < block.node_count(c, 0); ++i) {
+        if (block.kind(c, i, j, k) != NodeKind::active) continue;
+        for (int dir = 0; dir < 6; ++dir) {
+          const NodeLink a = block.link(c, {i, j, k}, dir);
+          const NodeLink b = whole.link(c, {i, j, block.first_plane() + k}, dir);
+          if (a.type != b.type || a.theta != b.theta || a.value != b.value) ++count;
+        }
+      }
+    }
+  }
+  return count;
+}
+
+void expect_the_whole_grid_sliced(bool open) {
+  const hs::common::Tube shape = tube();
+  const FvmGridSpec s = spec(open);
+  const FvmGrid whole(shape, s);
+  const hs::common::CartesianDecomposition slabs({.global_nodes = whole.cells(), .periodic = {false, false, !open},
+                                                  .ranks_per_axis = {1, 1, 0}, .ghost = 2},
+                                                 MPI_COMM_WORLD);
+  const FvmGrid block(shape, s, &slabs);
+  ASSERT_EQ(block.first_plane(), slabs.offset()[2]);
+  ASSERT_EQ(block.global_cells(), whole.cells());
+  const int first = block.first_plane();
+  int mine = differences(block.fluid_fractions(), whole.fluid_fractions(), first);
+  for (int c = 0; c < 3; ++c) {
+    mine += differences(block.kinds(c), whole.kinds(c), first);
+    mine += differences(block.fixed_values(c), whole.fixed_values(c), first);
+    mine += differences(block.apertures(c), whole.apertures(c), first);
+    mine += differences(block.open_areas(c), whole.open_areas(c), first);
+    mine += link_differences(block, whole, c);
+  }
+  int all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(all, 0);
+  // Each block owns its nodes once: the face nodes of component z over all blocks are the whole grid's.
+  int faces = block.node_count(2, 2);
+  int total = 0;
+  MPI_Allreduce(&faces, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(total, whole.node_count(2, 2));
+}
+
+TEST(FvmGridSlabs, ThePeriodicTubeIsTheWholeGridSliced) { expect_the_whole_grid_sliced(false); }
+
+TEST(FvmGridSlabs, TheOpenTubeIsTheWholeGridSlicedInletProfileIncluded) { expect_the_whole_grid_sliced(true); }
+
+TEST(FvmGridSlabs, TheSolverRefusesAGridOverSeveralRanksForNow) {
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size == 1) GTEST_SKIP() << "one block is the whole grid: the solver runs it";
+  const hs::common::Tube shape = tube();
+  const FvmGridSpec s = spec(false);
+  const hs::common::CartesianDecomposition slabs({.global_nodes = {kAcross, kAcross, 20}, .periodic = {false, false, true},
+                                                  .ranks_per_axis = {1, 1, 0}, .ghost = 2},
+                                                 MPI_COMM_WORLD);
+  const FvmGrid block(shape, s, &slabs);
+  EXPECT_THROW(FvmSolver(block, {.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6}, {.dt_s = 1e-4}, {}),
+               std::logic_error);
+}
+
+}  // namespace
+}  // namespace hs::unresolved
