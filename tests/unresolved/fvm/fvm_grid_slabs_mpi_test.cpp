@@ -114,6 +114,44 @@ TEST(FvmGridSlabs, ThePeriodicTubeIsTheWholeGridSliced) { expect_the_whole_grid_
 
 TEST(FvmGridSlabs, TheOpenTubeIsTheWholeGridSlicedInletProfileIncluded) { expect_the_whole_grid_sliced(true); }
 
+TEST(FvmGridSlabs, ACellFieldsGhostsAreTheWholeGridsOnEveryBlock) {
+  // fill_cell_field_ghosts (the coupling's fields): periodic wrap or zero gradient on the box, the neighbouring
+  // blocks' planes between blocks; on both tubes equal to the whole grid's ghosts bit for bit.
+  for (const bool open : {false, true}) {
+    const hs::common::Tube shape = tube();
+    const FvmGridSpec s = spec(open);
+    const FvmGrid whole(shape, s);
+    const hs::common::CartesianDecomposition slabs({.global_nodes = whole.cells(), .periodic = {false, false, !open},
+                                                    .ranks_per_axis = {1, 1, 0}, .ghost = 2},
+                                                   MPI_COMM_WORLD);
+    const FvmGrid block(shape, s, &slabs);
+    const auto value = [](int i, int j, int k) { return 1.0 + 0.1 * i + 0.01 * j + 0.001 * k * k; };
+    BlockField<double> w(whole.cells(), -1.0), b(block.cells(), -1.0);
+    for (int k = 0; k < whole.cells()[2]; ++k) {
+      for (int j = 0; j < kAcross; ++j) {
+        for (int i = 0; i < kAcross; ++i) w(i, j, k) = value(i, j, k);
+      }
+    }
+    for (int k = 0; k < block.cells()[2]; ++k) {
+      for (int j = 0; j < kAcross; ++j) {
+        for (int i = 0; i < kAcross; ++i) b(i, j, k) = value(i, j, block.first_plane() + k);
+      }
+    }
+    fill_cell_field_ghosts(whole, w);
+    fill_cell_field_ghosts(block, b);
+    // Planes -1 .. n of the block (n + 1 is a face grid's extra plane, not a cell field's ghost).
+    int mine = 0;
+    for (int k = -1; k <= block.cells()[2]; ++k) {
+      for (int j = -1; j <= kAcross; ++j) {
+        for (int i = -1; i <= kAcross; ++i) mine += b(i, j, k) != w(i, j, block.first_plane() + k) ? 1 : 0;
+      }
+    }
+    int all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_EQ(all, 0) << (open ? "open" : "periodic");
+  }
+}
+
 TEST(FvmGridSlabs, TheSolverRefusesAGridOverSeveralRanksForNow) {
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
