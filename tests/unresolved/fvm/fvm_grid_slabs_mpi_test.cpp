@@ -81,14 +81,25 @@ int link_differences(const FvmGrid& block, const FvmGrid& whole, int c) {
   return count;
 }
 
+/// The whole grid (on every rank) and this rank's z-slab of it, over the same tube.
+struct WholeAndBlock {
+  explicit WholeAndBlock(bool open)
+      : s(spec(open)), whole(shape, s),
+        slabs({.global_nodes = whole.cells(), .periodic = {false, false, !open}, .ranks_per_axis = {1, 1, 0}, .ghost = 2},
+              MPI_COMM_WORLD),
+        block(shape, s, &slabs) {}
+  hs::common::Tube shape = tube();
+  FvmGridSpec s;
+  FvmGrid whole;
+  hs::common::CartesianDecomposition slabs;
+  FvmGrid block;
+};
+
 void expect_the_whole_grid_sliced(bool open) {
-  const hs::common::Tube shape = tube();
-  const FvmGridSpec s = spec(open);
-  const FvmGrid whole(shape, s);
-  const hs::common::CartesianDecomposition slabs({.global_nodes = whole.cells(), .periodic = {false, false, !open},
-                                                  .ranks_per_axis = {1, 1, 0}, .ghost = 2},
-                                                 MPI_COMM_WORLD);
-  const FvmGrid block(shape, s, &slabs);
+  const WholeAndBlock grids(open);
+  const FvmGrid& whole = grids.whole;
+  const FvmGrid& block = grids.block;
+  const hs::common::CartesianDecomposition& slabs = grids.slabs;
   ASSERT_EQ(block.first_plane(), slabs.offset()[2]);
   ASSERT_EQ(block.global_cells(), whole.cells());
   const int first = block.first_plane();
@@ -118,13 +129,9 @@ TEST(FvmGridSlabs, ACellFieldsGhostsAreTheWholeGridsOnEveryBlock) {
   // fill_cell_field_ghosts (the coupling's fields): periodic wrap or zero gradient on the box, the neighbouring
   // blocks' planes between blocks; on both tubes equal to the whole grid's ghosts bit for bit.
   for (const bool open : {false, true}) {
-    const hs::common::Tube shape = tube();
-    const FvmGridSpec s = spec(open);
-    const FvmGrid whole(shape, s);
-    const hs::common::CartesianDecomposition slabs({.global_nodes = whole.cells(), .periodic = {false, false, !open},
-                                                    .ranks_per_axis = {1, 1, 0}, .ghost = 2},
-                                                   MPI_COMM_WORLD);
-    const FvmGrid block(shape, s, &slabs);
+    const WholeAndBlock grids(open);
+    const FvmGrid& whole = grids.whole;
+    const FvmGrid& block = grids.block;
     const auto value = [](int i, int j, int k) { return 1.0 + 0.1 * i + 0.01 * j + 0.001 * k * k; };
     BlockField<double> w(whole.cells(), -1.0), b(block.cells(), -1.0);
     for (int k = 0; k < whole.cells()[2]; ++k) {
