@@ -153,19 +153,23 @@ Plan make_plan(bool quick, int threads) {
   return p;
 }
 
+/// A search's archive line takes the judge's verdict (and the judge's version).
+void set_verdict(nlohmann::json& j, const hsr::RecoveryVerdict& v) {
+  j["exact"] = v.exact;
+  j["exact_strict"] = v.exact_strict;
+  j["symbolic"] = v.symbolic;
+  j["numeric"] = v.numeric;
+  j["r2_test"] = v.r2_test;
+  j["max_rel_error"] = v.max_rel_error;
+  j["judge"] = hsr::kRecoveryJudgeVersion;
+}
+
 /// An archived search's verdict by the current judge: the search is not repeated, its printed formula is judged
 /// again when an older judge wrote the verdict (a formula that does not parse keeps its verdict).
 nlohmann::json judged_again(nlohmann::json j, const hsr::FeynmanEquation& eq, double noise) {
   if (j.value("judge", 1) >= hsr::kRecoveryJudgeVersion) return j;
   try {
-    const hsr::RecoveryVerdict v = hsr::judge_recovery(eq, hsr::parse_infix(j.at("expression").get<std::string>(), eq.names), noise);
-    j["exact"] = v.exact;
-    j["exact_strict"] = v.exact_strict;
-    j["symbolic"] = v.symbolic;
-    j["numeric"] = v.numeric;
-    j["r2_test"] = v.r2_test;
-    j["max_rel_error"] = v.max_rel_error;
-    j["judge"] = hsr::kRecoveryJudgeVersion;
+    set_verdict(j, hsr::judge_recovery(eq, hsr::parse_infix(j.at("expression").get<std::string>(), eq.names), noise));
   } catch (const hsr::ParseError&) {
     // not a formula of this table's variables: the archived verdict stands
   }
@@ -237,11 +241,10 @@ int run_feynman_bench(const hs::common::TaskOptions& options) {
           const auto fit = hsr::fit_validated(s, c.validation, data.x, data.y);
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           const hsr::RecoveryVerdict v = hsr::judge_recovery(eq, fit.expression, noise);
-          const nlohmann::json j{{"key", key}, {"fingerprint", fp}, {"config", c.name}, {"id", eq.id},
-                                 {"noise", noise}, {"seed", seed}, {"exact", v.exact}, {"exact_strict", v.exact_strict}, {"symbolic", v.symbolic},
-                                 {"numeric", v.numeric}, {"r2_test", v.r2_test}, {"max_rel_error", v.max_rel_error},
-                                 {"seconds", seconds}, {"expression", v.expression}, {"formula", eq.formula},
-                                 {"judge", hsr::kRecoveryJudgeVersion}};
+          nlohmann::json j{{"key", key},     {"fingerprint", fp},  {"config", c.name},
+                           {"id", eq.id},    {"noise", noise},     {"seed", seed},
+                           {"seconds", seconds}, {"expression", v.expression}, {"formula", eq.formula}};
+          set_verdict(j, v);
           if (append.is_open()) append << j.dump() << "\n" << std::flush;
           results.push_back(j);
           ++computed;

@@ -22,12 +22,6 @@ HYPRE_IJMatrix as_matrix(void* p) { return static_cast<HYPRE_IJMatrix>(p); }
 HYPRE_IJVector as_vector(void* p) { return static_cast<HYPRE_IJVector>(p); }
 HYPRE_Solver as_solver(void* p) { return static_cast<HYPRE_Solver>(p); }
 
-double* vector_data(void* v) {
-  void* object = nullptr;
-  HYPRE_IJVectorGetObject(as_vector(v), &object);
-  return hypre_VectorData(hypre_ParVectorLocalVector(static_cast<hypre_ParVector*>(object)));
-}
-
 void* make_vector(MPI_Comm comm, int first_row, int rows) {
   HYPRE_IJVector v = nullptr;
   HYPRE_IJVectorCreate(comm, first_row, first_row + rows - 1, &v);
@@ -48,6 +42,9 @@ HYPRE_ParVector par_vector(void* v) {
   HYPRE_IJVectorGetObject(as_vector(v), &object);
   return static_cast<HYPRE_ParVector>(object);
 }
+
+/// This rank's part of an IJ vector's values.
+double* vector_data(void* v) { return hypre_VectorData(hypre_ParVectorLocalVector(par_vector(v))); }
 
 /// hypre's IJ layout needs rank k's rows right after rank k-1's: a matrix handed over otherwise is a caller's bug
 /// (the classic one: the whole matrix on every rank). Collective, so every rank throws or none does.
@@ -129,7 +126,7 @@ bool PressureSolver::can_reuse(const CsrMatrix& a) const {
 }
 
 void PressureSolver::update_values(const CsrMatrix& a) {
-  auto* par = reinterpret_cast<hypre_ParCSRMatrix*>(par_matrix(ij_matrix_));
+  hypre_ParCSRMatrix* par = par_matrix(ij_matrix_);
   HYPRE_Complex* diag = hypre_CSRMatrixData(hypre_ParCSRMatrixDiag(par));
   HYPRE_Complex* offd = hypre_CSRMatrixData(hypre_ParCSRMatrixOffd(par));
   const int diag_nnz = hypre_CSRMatrixNumNonzeros(hypre_ParCSRMatrixDiag(par));
@@ -142,7 +139,7 @@ void PressureSolver::update_values(const CsrMatrix& a) {
 }
 
 std::vector<int> PressureSolver::entry_positions(const CsrMatrix& a) const {
-  auto* par = reinterpret_cast<hypre_ParCSRMatrix*>(par_matrix(ij_matrix_));
+  hypre_ParCSRMatrix* par = par_matrix(ij_matrix_);
   const hypre_CSRMatrix* diag = hypre_ParCSRMatrixDiag(par);
   const hypre_CSRMatrix* offd = hypre_ParCSRMatrixOffd(par);
   const HYPRE_Int* di = hypre_CSRMatrixI(diag);
