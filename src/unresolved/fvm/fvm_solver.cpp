@@ -22,7 +22,7 @@ PressureCoupling pressure_coupling_from_name(std::string_view name) {
 
 FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const PisoSettings& piso, const FlowDrive& drive,
                      MPI_Comm comm)
-    : grid_(grid), fluid_(fluid), piso_(piso), drive_(drive), h_(grid.dx_m()), pressure_(comm) {
+    : grid_(grid), comm_(comm), fluid_(fluid), piso_(piso), drive_(drive), h_(grid.dx_m()), pressure_(comm) {
   if (grid.slabs() != nullptr && grid.slabs()->size() > 1) {
     // The grid and its halo are distributed; the momentum and pressure rows are not yet (docs/cfd-dem.md, step 2).
     throw std::logic_error("FvmSolver: a grid split over several ranks is not solved yet (issue #28, step 2)");
@@ -134,6 +134,10 @@ void FvmSolver::build_component(int c) {
       if (col >= 0) comp.slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(dir) + 1] = col == r ? -2 : find(col);
     }
   }
+  comp.solver = std::make_unique<MomentumSolver>(comm_);
+  comp.solver->set_matrix({.rows = rows, .first_row = 0, .row_ptr = {comp.m.outerIndexPtr(), comp.m.outerIndexPtr() + rows + 1},
+                           .cols = {comp.m.innerIndexPtr(), comp.m.innerIndexPtr() + comp.m.nonZeros()},
+                           .values = {comp.m.valuePtr(), comp.m.valuePtr() + comp.m.nonZeros()}});
   comp.x = Eigen::VectorXd::Zero(rows);
   comp.b = Eigen::VectorXd::Zero(rows);
   comp.a = Eigen::VectorXd::Ones(rows);

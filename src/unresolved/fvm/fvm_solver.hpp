@@ -5,6 +5,7 @@
 #include <mpi.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "unresolved/fvm/block_field.hpp"
 #include "unresolved/fvm/fvm_grid.hpp"
 #include "common/fluid_properties.hpp"
+#include "unresolved/fvm/momentum_solver.hpp"
 #include "unresolved/fvm/pressure_solver.hpp"
 
 namespace hs::unresolved {
@@ -53,7 +55,7 @@ struct PisoSettings {
   bool momentum_predictor = true;
   double max_courant = 1.0;             // step() throws NumericalError above it
   SolveTolerance pressure{};            // p: tolerance 1e-6, relTol 0.05 (final corrector: relTol 0)
-  double momentum_tolerance = 1e-6;     // BiCGSTAB relative residual of the momentum predictor
+  double momentum_tolerance = 1e-6;     // BiCGSTAB relative residual ||b - A u|| / ||b|| of the momentum predictor
   int momentum_max_iterations = 1000;
 };
 
@@ -165,6 +167,7 @@ class FvmSolver {
     std::vector<int> link_id;                  // per unknown: index into links, -1 when all six are active
     std::vector<std::array<NodeLink, 6>> links;
     SpMat m;                                   // momentum matrix (pattern fixed at construction)
+    std::unique_ptr<MomentumSolver> solver;    // holds m's pattern; takes its values before every solve
     std::vector<std::array<int, 7>> slot;      // positions in m's value array: diagonal, then 6 directions
     Eigen::VectorXd x, b, a, hbya;             // unknowns, source without grad p, diagonal the pressure uses, H/A
   };
@@ -177,6 +180,9 @@ class FvmSolver {
   void assemble_momentum(int c, bool convection = true);
   void compute_drive_response();
   void solve_momentum(int c);
+  /// Solves comp_[c].m x = rhs from the guess in x (momentum_solver.hpp).
+  MomentumSolve solve_momentum_system(int c, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double tolerance,
+                                      int max_iterations);
   void pressure_corrector(bool final);
   void correct_flow_rate();
   void update_fluxes();
@@ -192,6 +198,7 @@ class FvmSolver {
   void check_state() const;
 
   const FvmGrid& grid_;
+  MPI_Comm comm_;
   FluidProperties fluid_;
   PisoSettings piso_;
   FlowDrive drive_;

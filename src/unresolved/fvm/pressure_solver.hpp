@@ -4,21 +4,15 @@
 
 #include <mpi.h>
 
-#include <utility>
+#include <memory>
 #include <vector>
+
+#include "unresolved/fvm/csr_matrix.hpp"
 
 namespace hs::unresolved {
 
-/// This rank's rows of a symmetric positive definite matrix in CSR form. The rows are distributed in rank order:
-/// rank k owns the global rows first_row .. first_row + rows - 1, right after rank k-1's (hypre's IJ layout), and
-/// the column indices are global. On one rank first_row is 0 and the matrix is the whole one.
-struct CsrMatrix {
-  int rows = 0;
-  int first_row = 0;
-  std::vector<int> row_ptr;     // size rows + 1
-  std::vector<int> cols;        // global column indices
-  std::vector<double> values;
-};
+class HypreMatrix;
+class HypreVector;
 
 /// Stopping rule as OpenFOAM's: stop when ||r|| <= tolerance * ||b|| (absolute level) or when
 /// ||r|| <= rel_tol * ||r0|| (relative drop from the initial guess), whichever comes first.
@@ -59,7 +53,6 @@ class PressureSolver {
   void set_matrix(const CsrMatrix& a);
   /// Solves A x = b from the initial guess in x (this rank's rows of both); returns the number of PCG iterations.
   int solve(const std::vector<double>& b, std::vector<double>& x, const SolveTolerance& tol);
-  [[nodiscard]] const CsrMatrix& matrix() const { return a_; }
   /// BoomerAMG set-ups so far, and set_matrix() calls that kept the hierarchy.
   [[nodiscard]] long setups() const { return setups_; }
   [[nodiscard]] long reuses() const { return reuses_; }
@@ -69,30 +62,18 @@ class PressureSolver {
   void build(const CsrMatrix& a);
   /// Whether a's pattern is the hierarchy's and neither AmgReuse bound is passed.
   [[nodiscard]] bool can_reuse(const CsrMatrix& a) const;
-  /// Writes a's values into the hypre matrix in place (same pattern).
-  void update_values(const CsrMatrix& a);
-  /// Where each of a's entries sits in hypre's diagonal block (0..) or, after it, its off-diagonal block; empty
-  /// when an entry cannot be found (then no reuse).
-  [[nodiscard]] std::vector<int> entry_positions(const CsrMatrix& a) const;
-  /// ||b|| and ||b - A x|| over all ranks, with b and x already in hypre's vectors.
-  [[nodiscard]] std::pair<double, double> rhs_and_residual_norms();
 
   MPI_Comm comm_;
   AmgReuse reuse_;
-  CsrMatrix a_;
-  std::vector<double> setup_diagonal_;   // diagonal of the matrix the hierarchy was built on
-  std::vector<int> hypre_position_;      // entry_positions() of the matrix set (empty: no reuse)
-  long global_rows_ = 0;
-  int fresh_iterations_ = 0;             // most iterations of a solve while the hierarchy was fresh
-  bool fresh_ = false;                   // the matrix now set is the one the hierarchy was built on
-  bool stale_ = false;                   // a reused hierarchy passed the iteration bound
+  std::unique_ptr<HypreMatrix> a_;
+  std::unique_ptr<HypreVector> b_, x_, r_;   // right-hand side, solution, residual work vector
+  std::vector<double> setup_diagonal_;       // diagonal of the matrix the hierarchy was built on
+  int fresh_iterations_ = 0;                 // most iterations of a solve while the hierarchy was fresh
+  bool fresh_ = false;                       // the matrix now set is the one the hierarchy was built on
+  bool stale_ = false;                       // a reused hierarchy passed the iteration bound
   long setups_ = 0;
   long reuses_ = 0;
-  void* ij_matrix_ = nullptr;   // HYPRE_IJMatrix (hypre types stay out of this header)
-  void* ij_b_ = nullptr;
-  void* ij_x_ = nullptr;
-  void* ij_r_ = nullptr;        // residual work vector
-  void* pcg_ = nullptr;         // HYPRE_Solver
+  void* pcg_ = nullptr;                      // HYPRE_Solver (hypre types stay out of this header)
   void* amg_ = nullptr;
 };
 

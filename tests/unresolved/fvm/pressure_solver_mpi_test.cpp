@@ -12,12 +12,17 @@
 #include <stdexcept>
 #include <vector>
 
+#include "unresolved/fvm/distributed_rows.hpp"
 #include "unresolved/fvm/model_pressure_matrix.hpp"
 #include "unresolved/fvm/pressure_solver.hpp"
 
 namespace hs::unresolved {
 namespace {
 
+using distributed_rows::gathered;
+using distributed_rows::part_of;
+using distributed_rows::RankRows;
+using distributed_rows::rows_of;
 using pressure_model::kN;
 using pressure_model::norm;
 using pressure_model::pressure_matrix;
@@ -26,62 +31,10 @@ using pressure_model::void_fraction;
 
 constexpr int kRows = kN * kN * kN;
 
-struct RankRows {
-  int first = 0;
-  int count = 0;
-};
-
-/// This rank's z-planes of the box as a row range; uneven on purpose when there are several ranks.
-RankRows my_rows() {
-  int rank = 0;
-  int size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  const auto first_plane = [&](int r) {
-    if (r == 0) return 0;
-    if (r == size) return kN;
-    return std::max(1, r * kN / size - 1);   // every rank but the last one plane short
-  };
-  return {first_plane(rank) * kN * kN, (first_plane(rank + 1) - first_plane(rank)) * kN * kN};
-}
-
-/// Rows [first, first + count) of a whole matrix, with their global column indices.
-CsrMatrix rows_of(const CsrMatrix& whole, RankRows mine) {
-  CsrMatrix a;
-  a.rows = mine.count;
-  a.first_row = mine.first;
-  a.row_ptr.push_back(0);
-  for (int r = mine.first; r < mine.first + mine.count; ++r) {
-    for (int q = whole.row_ptr[static_cast<std::size_t>(r)]; q < whole.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
-      a.cols.push_back(whole.cols[static_cast<std::size_t>(q)]);
-      a.values.push_back(whole.values[static_cast<std::size_t>(q)]);
-    }
-    a.row_ptr.push_back(static_cast<int>(a.cols.size()));
-  }
-  return a;
-}
-
-/// Every rank's part of a distributed vector, put together in row order on every rank.
-std::vector<double> gathered(const std::vector<double>& part) {
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  const int mine = static_cast<int>(part.size());
-  std::vector<int> counts(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size), 0);
-  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  for (int r = 1; r < size; ++r) offsets[static_cast<std::size_t>(r)] = offsets[static_cast<std::size_t>(r) - 1] + counts[static_cast<std::size_t>(r) - 1];
-  std::vector<double> whole(static_cast<std::size_t>(offsets.back() + counts.back()));
-  MPI_Allgatherv(part.data(), mine, MPI_DOUBLE, whole.data(), counts.data(), offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
-  return whole;
-}
-
 std::vector<double> right_hand_side() {
   std::vector<double> b(static_cast<std::size_t>(kRows));
   for (std::size_t r = 0; r < b.size(); ++r) b[r] = std::sin(0.37 * static_cast<double>(r)) + 0.1;
   return b;
-}
-
-std::vector<double> part_of(const std::vector<double>& whole, RankRows mine) {
-  return {whole.begin() + mine.first, whole.begin() + mine.first + mine.count};
 }
 
 const SolveTolerance kTight{.tolerance = 1e-10, .rel_tol = 0.0, .max_iterations = 500};
@@ -89,7 +42,7 @@ const SolveTolerance kTight{.tolerance = 1e-10, .rel_tol = 0.0, .max_iterations 
 TEST(DistributedPressureSolve, SolvesTheWholeSystemAsOneRankDoes) {
   const CsrMatrix whole = pressure_matrix(void_fraction(0.0));
   const std::vector<double> b = right_hand_side();
-  const RankRows mine = my_rows();
+  const RankRows mine = distributed_rows::my_rows(kN);
 
   PressureSolver distributed(MPI_COMM_WORLD);
   distributed.set_matrix(rows_of(whole, mine));
@@ -118,7 +71,7 @@ TEST(DistributedPressureSolve, KeepsTheHierarchyAndUpdatesTheOffRankEntries) {
   // matrix, so the new values must reach both of hypre's blocks (an off-rank entry left at its old value shows as a
   // residual of the new system far above the tolerance).
   const std::vector<double> b = right_hand_side();
-  const RankRows mine = my_rows();
+  const RankRows mine = distributed_rows::my_rows(kN);
   PressureSolver solver(MPI_COMM_WORLD);
   solver.set_matrix(rows_of(pressure_matrix(void_fraction(0.0)), mine));
   std::vector<double> x_part(static_cast<std::size_t>(mine.count), 0.0);

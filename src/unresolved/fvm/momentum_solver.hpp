@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// A momentum equation's linear solve: hypre BiCGSTAB with a Jacobi (inverse diagonal) preconditioner.
+#pragma once
+
+#include <mpi.h>
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "unresolved/fvm/csr_matrix.hpp"
+
+namespace hs::unresolved {
+
+class HypreMatrix;
+class HypreVector;
+
+/// The outcome of MomentumSolver::solve: iterations, and ||b - A x|| / ||b|| at the end.
+struct MomentumSolve {
+  int iterations = 0;
+  double relative_residual = 0.0;
+};
+
+/// Solves the (non-symmetric, diagonally dominant) momentum systems with hypre's BiCGSTAB preconditioned by the
+/// inverse diagonal, which needs nothing beyond each rank's rows: the method of Eigen's
+/// BiCGSTAB<DiagonalPreconditioner> it replaces, now on distributed rows. Every rank calls set_matrix(),
+/// set_values() and solve() with its own rows (collective calls; CsrMatrix's rank-order layout).
+class MomentumSolver {
+ public:
+  explicit MomentumSolver(MPI_Comm comm = MPI_COMM_WORLD);
+  ~MomentumSolver();
+  MomentumSolver(const MomentumSolver&) = delete;
+  MomentumSolver& operator=(const MomentumSolver&) = delete;
+
+  /// Hands over a matrix: assembled in hypre when its pattern is new, otherwise only its values are written.
+  void set_matrix(const CsrMatrix& a);
+  /// New values for the pattern set last, in its entry order (the predictor's coefficients change every step).
+  void set_values(std::span<const double> values);
+  /// Solves A x = b from the guess in x (this rank's rows) until ||b - A x|| <= tolerance ||b|| (Eigen's rule;
+  /// hypre checks the true residual before it stops) or max_iterations. The caller judges the returned residual.
+  MomentumSolve solve(std::span<const double> b, std::span<double> x, double tolerance, int max_iterations);
+
+ private:
+  MPI_Comm comm_;
+  std::unique_ptr<HypreMatrix> a_;
+  std::unique_ptr<HypreVector> b_, x_, r_;
+  std::vector<int> diagonal_entry_;      // position of each row's diagonal among its entries
+  std::vector<double> inverse_diagonal_; // the preconditioner, refreshed from the values before every solve
+  void* bicgstab_ = nullptr;             // HYPRE_Solver (hypre types stay out of this header)
+};
+
+}  // namespace hs::unresolved
