@@ -60,7 +60,7 @@ double shortley_weller(const auto& comp, int lid, int dir) {
 void FvmSolver::assemble_momentum(int c, bool convection) {
   Component& comp = comp_[static_cast<std::size_t>(c)];
   const long rows = static_cast<long>(comp.node.size());
-  double* val = comp.m.valuePtr();
+  double* val = comp.m.values.data();
   const double dt = piso_.dt_s;
   const double rho = fluid_.density_kg_m3;
   const double nu_h2 = fluid_.kinematic_viscosity_m2_s / (h_ * h_);
@@ -98,6 +98,7 @@ void FvmSolver::assemble_momentum(int c, bool convection) {
     comp.a[r] = piso_.coupling == PressureCoupling::projection ? e / dt + ks / rho : diag;
     comp.b[r] = rhs;
   }
+  comp.solver->set_values(comp.m.values);
 }
 
 void FvmSolver::solve_momentum(int c) {
@@ -127,7 +128,6 @@ void FvmSolver::solve_momentum(int c) {
 MomentumSolve FvmSolver::solve_momentum_system(int c, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double tolerance,
                                                int max_iterations) {
   Component& comp = comp_[static_cast<std::size_t>(c)];
-  comp.solver->set_values({comp.m.valuePtr(), static_cast<std::size_t>(comp.m.nonZeros())});
   const auto n = static_cast<std::size_t>(rhs.size());
   return comp.solver->solve({rhs.data(), n}, {x.data(), n}, tolerance, max_iterations);
 }

@@ -133,7 +133,9 @@ void FvmSolver::pressure_corrector(bool final) {
   for (int c = 0; c < 3; ++c) {
     Component& comp = comp_[static_cast<std::size_t>(c)];
     if (comp.node.empty()) continue;
-    comp.hbya = (comp.b + comp.a.cwiseProduct(comp.x) - comp.m * comp.x).cwiseQuotient(comp.a);
+    Eigen::VectorXd mx(comp.x.size());
+    comp.solver->multiply({comp.x.data(), static_cast<std::size_t>(comp.x.size())}, {mx.data(), static_cast<std::size_t>(mx.size())});   // hypre's product: it fetches the neighbouring ranks' unknowns
+    comp.hbya = (comp.b + comp.a.cwiseProduct(comp.x) - mx).cwiseQuotient(comp.a);
     scatter(c, comp.hbya, hb_[static_cast<std::size_t>(c)]);
   }
   const long rows = static_cast<long>(p_cell_.size());

@@ -83,21 +83,62 @@ void FvmSolver::build_component(int c) {
   }
   const int rows = static_cast<int>(comp.node.size());
   comp.link_id.assign(static_cast<std::size_t>(rows), -1);
-  std::vector<Eigen::Triplet<double, int>> pattern;
-  pattern.reserve(static_cast<std::size_t>(rows) * 7);
+  // This rank's rows come after the lower ranks' (hypre's layout): columns are global row numbers.
+  int first_row = 0;
+  MPI_Exscan(&rows, &first_row, 1, MPI_INT, MPI_SUM, comm_);
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  if (rank == 0) first_row = 0;   // MPI_Exscan leaves rank 0's result undefined
+  CsrMatrix& m = comp.m;
+  m = CsrMatrix{.rows = rows, .first_row = first_row, .row_ptr = {0}, .cols = {}, .values = {}};
+  m.cols.reserve(static_cast<std::size_t>(rows) * 7);
+  comp.slot.assign(static_cast<std::size_t>(rows), std::array<int, 7>{-1, -1, -1, -1, -1, -1, -1});
   const auto& n = grid_.cells();
   for (int r = 0; r < rows; ++r) {
     const long idx = comp.node[static_cast<std::size_t>(r)];
-    pattern.emplace_back(r, r, 1.0);
+    // The row's distinct columns in order: itself and its active neighbours (a periodic axis of one or two cells
+    // makes a neighbour appear twice, or the node its own neighbour).
+    std::array<int, 7> neighbour{};
+    std::array<int, 7> cols{};
+    int count = 0;
+    cols[static_cast<std::size_t>(count++)] = r;
     bool interior = true;
     for (int dir = 0; dir < 6; ++dir) {
       const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
       const int col = comp.row[static_cast<std::size_t>(nb)];
+      neighbour[static_cast<std::size_t>(dir)] = col;
       if (col >= 0) {
-        pattern.emplace_back(r, col, 1.0);
+        cols[static_cast<std::size_t>(count++)] = col;
       } else {
         interior = false;
       }
+    }
+    // Insertion into a sorted run of distinct columns (at most 7; std::sort on the partly used array trips GCC 12's
+    // -Warray-bounds).
+    int distinct = 0;
+    for (int q = 0; q < count; ++q) {
+      const int col = cols[static_cast<std::size_t>(q)];
+      int at = 0;
+      while (at < distinct && cols[static_cast<std::size_t>(at)] < col) ++at;
+      if (at < distinct && cols[static_cast<std::size_t>(at)] == col) continue;
+      for (int s = distinct; s > at; --s) cols[static_cast<std::size_t>(s)] = cols[static_cast<std::size_t>(s) - 1];
+      cols[static_cast<std::size_t>(at)] = col;
+      ++distinct;
+    }
+    const int start = m.row_ptr.back();
+    const auto position = [&](int col) {
+      int at = 0;
+      while (cols[static_cast<std::size_t>(at)] != col) ++at;
+      return start + at;
+    };
+    for (int q = 0; q < distinct; ++q) m.cols.push_back(first_row + cols[static_cast<std::size_t>(q)]);
+    m.row_ptr.push_back(start + distinct);
+    auto& slot = comp.slot[static_cast<std::size_t>(r)];
+    slot[0] = position(r);
+    for (int dir = 0; dir < 6; ++dir) {
+      const int col = neighbour[static_cast<std::size_t>(dir)];
+      // A one-cell periodic axis makes a node its own neighbour: that link contributes nothing (-2).
+      if (col >= 0) slot[static_cast<std::size_t>(dir) + 1] = col == r ? -2 : position(col);
     }
     if (interior) continue;
     const long sx = n[0] + 3;
@@ -106,38 +147,14 @@ void FvmSolver::build_component(int c) {
                                  static_cast<int>(idx / (sx * sy)) - 1};
     std::array<NodeLink, 6> links{};
     for (int dir = 0; dir < 6; ++dir) {
-      const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
-      if (comp.row[static_cast<std::size_t>(nb)] < 0) links[static_cast<std::size_t>(dir)] = grid_.link(c, ijk, dir);
+      if (neighbour[static_cast<std::size_t>(dir)] < 0) links[static_cast<std::size_t>(dir)] = grid_.link(c, ijk, dir);
     }
     comp.link_id[static_cast<std::size_t>(r)] = static_cast<int>(comp.links.size());
     comp.links.push_back(links);
   }
-  comp.m.resize(rows, rows);
-  comp.m.setFromTriplets(pattern.begin(), pattern.end(), [](double, double b) { return b; });
-  comp.m.makeCompressed();
-  comp.slot.assign(static_cast<std::size_t>(rows), std::array<int, 7>{-1, -1, -1, -1, -1, -1, -1});
-  for (int r = 0; r < rows; ++r) {
-    const long idx = comp.node[static_cast<std::size_t>(r)];
-    const int* outer = comp.m.outerIndexPtr();
-    const int* inner = comp.m.innerIndexPtr();
-    auto find = [&](int col) {
-      for (int q = outer[r]; q < outer[r + 1]; ++q) {
-        if (inner[q] == col) return q;
-      }
-      return -1;
-    };
-    comp.slot[static_cast<std::size_t>(r)][0] = find(r);
-    for (int dir = 0; dir < 6; ++dir) {
-      const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
-      const int col = comp.row[static_cast<std::size_t>(nb)];
-      // A one-cell periodic axis makes a node its own neighbour: that link contributes nothing (-2).
-      if (col >= 0) comp.slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(dir) + 1] = col == r ? -2 : find(col);
-    }
-  }
+  m.values.assign(m.cols.size(), 1.0);
   comp.solver = std::make_unique<MomentumSolver>(comm_);
-  comp.solver->set_matrix({.rows = rows, .first_row = 0, .row_ptr = {comp.m.outerIndexPtr(), comp.m.outerIndexPtr() + rows + 1},
-                           .cols = {comp.m.innerIndexPtr(), comp.m.innerIndexPtr() + comp.m.nonZeros()},
-                           .values = {comp.m.valuePtr(), comp.m.valuePtr() + comp.m.nonZeros()}});
+  comp.solver->set_matrix(m);
   comp.x = Eigen::VectorXd::Zero(rows);
   comp.b = Eigen::VectorXd::Zero(rows);
   comp.a = Eigen::VectorXd::Ones(rows);

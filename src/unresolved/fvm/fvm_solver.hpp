@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Sparse>
+#include <Eigen/Core>
 
 #include "common/io/checkpoint.hpp"
 #include "common/vec3.hpp"
@@ -160,15 +160,14 @@ class FvmSolver {
   void read_state(const hs::common::Checkpoint& cp, const std::string& prefix);
 
  private:
-  using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
   struct Component {
     std::vector<long> node;                    // padded index of each unknown
     BlockField<int> row;                       // unknown number of each node, -1 if not active
     std::vector<int> link_id;                  // per unknown: index into links, -1 when all six are active
     std::vector<std::array<NodeLink, 6>> links;
-    SpMat m;                                   // momentum matrix (pattern fixed at construction)
-    std::unique_ptr<MomentumSolver> solver;    // holds m's pattern; takes its values before every solve
-    std::vector<std::array<int, 7>> slot;      // positions in m's value array: diagonal, then 6 directions
+    CsrMatrix m;                               // momentum rows, global columns (pattern fixed at construction)
+    std::unique_ptr<MomentumSolver> solver;    // holds m's pattern; takes its values after every assembly
+    std::vector<std::array<int, 7>> slot;      // positions in m.values: diagonal, then 6 directions
     Eigen::VectorXd x, b, a, hbya;             // unknowns, source without grad p, diagonal the pressure uses, H/A
   };
 

@@ -77,6 +77,13 @@ void MomentumSolver::set_values(std::span<const double> values) {
   a_->update_values(values);
 }
 
+void MomentumSolver::multiply(std::span<const double> x, std::span<double> y) {
+  if (a_ == nullptr) throw std::logic_error("MomentumSolver::multiply before set_matrix");
+  x_->assign(x);
+  HYPRE_ParCSRMatrixMatvec(1.0, a_->par(), x_->par(), 0.0, b_->par());
+  b_->copy_to(y);
+}
+
 MomentumSolve MomentumSolver::solve(std::span<const double> b, std::span<double> x, double tolerance,
                                     int max_iterations) {
   if (a_ == nullptr) throw std::logic_error("MomentumSolver::solve before set_matrix");

@@ -36,6 +36,8 @@ class MomentumSolver {
   void set_matrix(const CsrMatrix& a);
   /// New values for the pattern set last, in its entry order (the predictor's coefficients change every step).
   void set_values(std::span<const double> values);
+  /// y = A x (this rank's rows of both), with the values set last.
+  void multiply(std::span<const double> x, std::span<double> y);
   /// Solves A x = b from the guess in x (this rank's rows) until ||b - A x|| <= tolerance ||b|| (Eigen's rule;
   /// hypre checks the true residual before it stops) or max_iterations. The caller judges the returned residual.
   MomentumSolve solve(std::span<const double> b, std::span<double> x, double tolerance, int max_iterations);
