@@ -157,7 +157,7 @@ void FvmSolver::compute_drive_response() {
     const long idx = comp.node[static_cast<std::size_t>(r)];
     flux += face_average(eps_, c, idx) * ap[static_cast<std::size_t>(idx)] * h_ * h_ * drive_response_[r];
   }
-  drive_response_flux_ = flux / grid_.node_count(c, c);
+  drive_response_flux_ = sum_over_ranks(flux) / static_cast<double>(global_node_count(c, c));
 }
 
 /// The viscous links of the momentum row without its eps: div(tau) = rho nu / dx^2 sum_l SW_l m_l (u_l - u_P) at every

@@ -81,7 +81,7 @@ double FvmSolver::opening_flow_rate_m3_s(std::size_t k) const {
   const auto& phi = phi_[static_cast<std::size_t>(on.axis)];
   double sum = 0.0;
   for (const std::size_t idx : on.nodes) sum += phi[idx];
-  return sum * grid_.openings()[k].opening.normal[on.axis];
+  return sum_over_ranks(sum) * grid_.openings()[k].opening.normal[on.axis];
 }
 
 }  // namespace hs::unresolved

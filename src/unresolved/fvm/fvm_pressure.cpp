@@ -33,9 +33,7 @@ void FvmSolver::build_pressure_rows() {
       }
     }
   }
-  for (int a = 0; a < 3; ++a) {
-    if (grid_.periodic(a)) p_row_.fill_periodic(a, n[static_cast<std::size_t>(a)]);
-  }
+  for (int a = 0; a < 3; ++a) fill_shared_ghosts(p_row_, a);
   // Without an outlet the pressure level is free: pin the first cell (OpenFOAM's pRefCell).
   p_ref_row_ = (outlet || p_cell_.empty()) ? -1 : 0;
   p_rhs_.assign(p_cell_.size(), 0.0);
@@ -111,17 +109,16 @@ void FvmSolver::build_pressure_matrix() {
 void FvmSolver::fill_pressure_ghosts() {
   const auto& n = grid_.cells();
   for (int a = 0; a < 3; ++a) {
-    if (grid_.periodic(a)) {
-      p_.fill_periodic(a, n[static_cast<std::size_t>(a)]);
-      continue;
+    if (!grid_.periodic(a)) {
+      p_.fill_zero_gradient(a);
+      const int na = n[static_cast<std::size_t>(a)];
+      for (int hi = 0; hi < 2; ++hi) {
+        if (grid_.side(a, hi).type != SideType::pressure_outlet) continue;
+        // p = 0 on the outlet face: the ghost mirrors the first cell with opposite sign.
+        p_.for_each_in_plane(a, hi == 1 ? na : -1, [&](std::size_t idx) { p_[idx] = -p_[idx]; });
+      }
     }
-    p_.fill_zero_gradient(a);
-    const int na = n[static_cast<std::size_t>(a)];
-    for (int hi = 0; hi < 2; ++hi) {
-      if (grid_.side(a, hi).type != SideType::pressure_outlet) continue;
-      // p = 0 on the outlet face: the ghost mirrors the first cell with opposite sign.
-      p_.for_each_in_plane(a, hi == 1 ? na : -1, [&](std::size_t idx) { p_[idx] = -p_[idx]; });
-    }
+    fill_shared_ghosts(p_, a);
   }
   // Openings' pressure outlets: p = p_b on the face, so the ghost cell mirrors the first cell about p_b.
   for (const OutletFace& f : outlet_faces_) {

@@ -78,9 +78,7 @@ void FvmSolver::build_component(int c) {
       }
     }
   }
-  for (int a = 0; a < 3; ++a) {
-    if (grid_.periodic(a)) comp.row.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
-  }
+  for (int a = 0; a < 3; ++a) fill_shared_ghosts(comp.row, a);
   const int rows = static_cast<int>(comp.node.size());
   comp.link_id.assign(static_cast<std::size_t>(rows), -1);
   // This rank's rows come after the lower ranks' (hypre's layout): columns are global row numbers.
@@ -193,10 +191,11 @@ void FvmSolver::step() {
 }
 
 void FvmSolver::check_state() const {
-  for (int c = 0; c < 3; ++c) {
-    if (!comp_[static_cast<std::size_t>(c)].x.allFinite()) {
-      throw hs::common::NumericalError(fmt::format("FVM: non-finite velocity at t = {:.6g} s (step {})", time_s_, steps_));
-    }
+  bool finite = true;
+  for (int c = 0; c < 3; ++c) finite = finite && comp_[static_cast<std::size_t>(c)].x.allFinite();
+  // Every rank throws or none does (a rank left behind would wait in the next collective call).
+  if (max_over_ranks(finite ? 0.0 : 1.0) > 0.0) {
+    throw hs::common::NumericalError(fmt::format("FVM: non-finite velocity at t = {:.6g} s (step {})", time_s_, steps_));
   }
   if (stats_.courant > piso_.max_courant) {
     throw hs::common::NumericalError(fmt::format(
@@ -213,7 +212,7 @@ double FvmSolver::courant_number() const {
     const auto& x = comp_[static_cast<std::size_t>(c)].x;
     if (x.size() > 0) umax = std::max(umax, x.cwiseAbs().maxCoeff());
   }
-  return umax * piso_.dt_s / h_;
+  return max_over_ranks(umax) * piso_.dt_s / h_;
 }
 
 void FvmSolver::scatter(int c, const Eigen::VectorXd& values, BlockField<double>& field) const {
@@ -224,41 +223,61 @@ void FvmSolver::scatter(int c, const Eigen::VectorXd& values, BlockField<double>
 
 void FvmSolver::fill_velocity_ghosts(int c, BlockField<double>& field) const {
   for (int a = 0; a < 3; ++a) {
-    if (grid_.periodic(a)) {
-      field.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
-      continue;
-    }
-    if (a == c) {
-      // Normal component: faces 0..n are real nodes, the ghosts are -1 and n + 1 (zero gradient).
-      const int n = grid_.cells()[static_cast<std::size_t>(a)];
-      const auto st = static_cast<std::size_t>(field.stride(a));
-      field.for_each_in_plane(a, -1, [&](std::size_t idx) { field[idx] = field[idx + st]; });
-      field.for_each_in_plane(a, n + 1, [&](std::size_t idx) { field[idx] = field[idx - st]; });
-      continue;
-    }
-    field.fill_zero_gradient(a);
-    // Tangential component beyond a wall: reflect about the wall value, so interpolation sees u_wall there.
-    const int n = grid_.cells()[static_cast<std::size_t>(a)];
-    for (int hi = 0; hi < 2; ++hi) {
-      const SideCondition& side = grid_.side(a, hi);
-      if (side.type != SideType::wall) continue;
-      const double wall = 2.0 * side.wall_velocity_m_s[c];
-      field.for_each_in_plane(a, hi == 1 ? n : -1, [&](std::size_t idx) { field[idx] = wall - field[idx]; });
-      for (const OpenGhost& g : open_ghosts_[static_cast<std::size_t>(c)]) {
-        if (g.axis == a && g.high == hi) field[g.ghost] = field[g.interior];
-      }
+    if (!grid_.periodic(a)) fill_velocity_boundary(c, a, field);
+    fill_shared_ghosts(field, a);
+  }
+}
+
+/// The ghosts of velocity component c beyond the box's sides along the non-periodic axis a.
+void FvmSolver::fill_velocity_boundary(int c, int a, BlockField<double>& field) const {
+  const int n = grid_.cells()[static_cast<std::size_t>(a)];
+  if (a == c) {
+    // Normal component: faces 0..n are real nodes, the ghosts are -1 and n + 1 (zero gradient).
+    const auto st = static_cast<std::size_t>(field.stride(a));
+    field.for_each_in_plane(a, -1, [&](std::size_t idx) { field[idx] = field[idx + st]; });
+    field.for_each_in_plane(a, n + 1, [&](std::size_t idx) { field[idx] = field[idx - st]; });
+    return;
+  }
+  field.fill_zero_gradient(a);
+  // Tangential component beyond a wall: reflect about the wall value, so interpolation sees u_wall there.
+  for (int hi = 0; hi < 2; ++hi) {
+    const SideCondition& side = grid_.side(a, hi);
+    if (side.type != SideType::wall) continue;
+    const double wall = 2.0 * side.wall_velocity_m_s[c];
+    field.for_each_in_plane(a, hi == 1 ? n : -1, [&](std::size_t idx) { field[idx] = wall - field[idx]; });
+    for (const OpenGhost& g : open_ghosts_[static_cast<std::size_t>(c)]) {
+      if (g.axis == a && g.high == hi) field[g.ghost] = field[g.interior];
     }
   }
 }
 
 void FvmSolver::fill_cell_ghosts(BlockField<double>& field) const {
   for (int a = 0; a < 3; ++a) {
-    if (grid_.periodic(a)) {
-      field.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
-    } else {
-      field.fill_zero_gradient(a);
-    }
+    if (!grid_.periodic(a)) field.fill_zero_gradient(a);
+    fill_shared_ghosts(field, a);
   }
+}
+
+double FvmSolver::sum_over_ranks(double local) const {
+  double total = 0.0;
+  MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, comm_);
+  return total;
+}
+
+double FvmSolver::max_over_ranks(double local) const {
+  double most = 0.0;
+  MPI_Allreduce(&local, &most, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  return most;
+}
+
+long FvmSolver::global_node_count(int c, int a) const {
+  long count = grid_.node_count(c, a);
+  if (grid_.slabs() != nullptr && a == 2) {
+    long total = 0;
+    MPI_Allreduce(&count, &total, 1, MPI_LONG, MPI_SUM, comm_);
+    count = total;
+  }
+  return count;
 }
 
 void FvmSolver::update_fluxes() {
@@ -276,9 +295,7 @@ void FvmSolver::update_fluxes() {
         }
       }
     }
-    for (int a = 0; a < 3; ++a) {
-      if (grid_.periodic(a)) phi.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
-    }
+    for (int a = 0; a < 3; ++a) fill_shared_ghosts(phi, a);
   }
 }
 
@@ -290,7 +307,7 @@ double FvmSolver::flow_rate_m3_s(int axis) const {
       for (int i = 0; i < grid_.node_count(axis, 0); ++i) sum += phi(i, j, k);
     }
   }
-  return sum / grid_.node_count(axis, axis);
+  return sum_over_ranks(sum) / static_cast<double>(global_node_count(axis, axis));
 }
 
 void FvmSolver::correct_flow_rate() {

@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "unresolved/fvm/block_field.hpp"
+#include "unresolved/fvm/block_halo.hpp"
 #include "unresolved/fvm/fvm_grid.hpp"
 #include "common/fluid_properties.hpp"
 #include "unresolved/fvm/momentum_solver.hpp"
@@ -140,7 +141,8 @@ class FvmSolver {
   [[nodiscard]] hs::common::Vec3 cell_velocity(int i, int j, int k) const;
   /// Cell pressure, Pa, including the driving mean gradient (zero at the box origin) and the openings' pressure level.
   [[nodiscard]] double cell_pressure_Pa(int i, int j, int k) const;
-  /// Mean volume flux through the cross-sections normal to `axis`, m^3/s.
+  /// Mean volume flux through the cross-sections normal to `axis`, m^3/s. Collective (this and the two below: every
+  /// rank of the solver's communicator calls them).
   [[nodiscard]] double flow_rate_m3_s(int axis) const;
   /// Volume flux out of the domain through opening k of the grid (grid().openings()[k]), m^3/s: negative at an
   /// inlet. The sum of the face fluxes eps aperture dx^2 u_n over the opening's face nodes (fvm_openings.cpp).
@@ -188,6 +190,24 @@ class FvmSolver {
   void update_viscous_force();
   void scatter(int c, const Eigen::VectorXd& values, BlockField<double>& field) const;
   void fill_velocity_ghosts(int c, BlockField<double>& field) const;
+  void fill_velocity_boundary(int c, int a, BlockField<double>& field) const;
+  /// The ghost planes along axis a that another block or the periodic wrap provides: exchange_halo along the
+  /// split axis (z over slabs; at one rank it wraps a periodic z through MPI, bit for bit fill_periodic), the
+  /// periodic wrap along an unsplit periodic axis. Called after the boundary conditions, so between two blocks the
+  /// neighbour's planes replace what a boundary condition wrote there.
+  template <typename T>
+  void fill_shared_ghosts(BlockField<T>& field, int a) const {
+    if (grid_.slabs() != nullptr && a == 2) {
+      exchange_halo(field, *grid_.slabs(), a);
+    } else if (grid_.periodic(a)) {
+      field.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
+    }
+  }
+  /// Over the ranks: the sum, or the largest value (collective).
+  [[nodiscard]] double sum_over_ranks(double local) const;
+  [[nodiscard]] double max_over_ranks(double local) const;
+  /// Velocity nodes of component c along axis a in the whole grid (node_count summed over the blocks along z).
+  [[nodiscard]] long global_node_count(int c, int a) const;
   void fill_cell_ghosts(BlockField<double>& field) const;
   void fill_pressure_ghosts();
   [[nodiscard]] double face_average(const BlockField<double>& cell_field, int c, long idx) const;
