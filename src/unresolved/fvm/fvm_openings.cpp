@@ -66,13 +66,13 @@ void FvmSolver::add_outlet_pressures() {
   p_bc_.assign(p_cell_.size(), 0.0);
   const double inv_h2 = 1.0 / (h_ * h_);
   for (const OutletFace& f : outlet_faces_) {
-    const int r = p_row_[static_cast<std::size_t>(f.interior)];
+    const int row = p_row_[static_cast<std::size_t>(f.interior)];
     const Component& comp = comp_[static_cast<std::size_t>(f.axis)];
-    const int urow = comp.row[static_cast<std::size_t>(f.node)];
-    if (r < 0 || urow < 0) continue;
+    if (row < 0 || comp.row[static_cast<std::size_t>(f.node)] < 0) continue;
     const double e = face_average(eps_, f.axis, f.node);
-    const double d = e * e * grid_.apertures(f.axis)[static_cast<std::size_t>(f.node)] / comp.a[urow] * inv_h2;
-    p_bc_[static_cast<std::size_t>(r)] += 2.0 * d * f.p_kin;
+    const double a = a_face_[static_cast<std::size_t>(f.axis)][static_cast<std::size_t>(f.node)];
+    const double d = e * e * grid_.apertures(f.axis)[static_cast<std::size_t>(f.node)] / a * inv_h2;
+    p_bc_[static_cast<std::size_t>(row - p_first_row_)] += 2.0 * d * f.p_kin;
   }
 }
 

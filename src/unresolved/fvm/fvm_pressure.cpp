@@ -23,27 +23,47 @@ void FvmSolver::build_pressure_rows() {
           for (const long f : {idx, idx + st}) {
             if (row[static_cast<std::size_t>(f)] < 0) continue;
             active = true;
-            const int along = std::array<int, 3>{i, j, k}[static_cast<std::size_t>(a)] + (f == idx ? 0 : 1);
-            if (!grid_.periodic(a) && (along == 0 || along == n[static_cast<std::size_t>(a)])) outlet = true;
+            // The face's place in the whole grid: a block's planes start at its first plane along z.
+            const int offset = a == 2 ? grid_.first_plane() : 0;
+            const int along = std::array<int, 3>{i, j, k}[static_cast<std::size_t>(a)] + (f == idx ? 0 : 1) + offset;
+            const int last = grid_.global_cells()[static_cast<std::size_t>(a)];
+            if (!grid_.periodic(a) && (along == 0 || along == last)) outlet = true;
           }
         }
         if (!active) continue;
-        p_row_(i, j, k) = static_cast<int>(p_cell_.size());
         p_cell_.push_back(idx);
       }
     }
   }
+  const int rows = static_cast<int>(p_cell_.size());
+  p_first_row_ = rows_before(rows);
+  for (int r = 0; r < rows; ++r) p_row_[static_cast<std::size_t>(p_cell_[static_cast<std::size_t>(r)])] = p_first_row_ + r;
   for (int a = 0; a < 3; ++a) fill_shared_ghosts(p_row_, a);
-  // Without an outlet the pressure level is free: pin the first cell (OpenFOAM's pRefCell).
-  p_ref_row_ = (outlet || p_cell_.empty()) ? -1 : 0;
+  // Without an outlet anywhere the pressure level is free: pin the first cell (OpenFOAM's pRefCell), global row 0.
+  const bool any_outlet = max_over_ranks(outlet ? 1.0 : 0.0) > 0.0;
+  const bool any_rows = sum_over_ranks(static_cast<double>(rows)) > 0.0;
+  p_ref_row_ = (any_outlet || !any_rows) ? -1 : 0;
   p_rhs_.assign(p_cell_.size(), 0.0);
   p_x_.assign(p_cell_.size(), 0.0);
+}
+
+/// The momentum diagonal A of every velocity node, the neighbouring blocks' in the ghost planes: a pressure row
+/// reads it on all six faces of its cell, and a block's top face belongs to the block above.
+void FvmSolver::spread_momentum_diagonal() {
+  for (int c = 0; c < 3; ++c) {
+    const Component& comp = comp_[static_cast<std::size_t>(c)];
+    BlockField<double>& a_face = a_face_[static_cast<std::size_t>(c)];
+    if (a_face.data().empty()) a_face = BlockField<double>(grid_.cells(), 1.0);
+    for (std::size_t r = 0; r < comp.node.size(); ++r) a_face[static_cast<std::size_t>(comp.node[r])] = comp.a[static_cast<long>(r)];
+    for (int a = 0; a < 3; ++a) fill_shared_ghosts(a_face, a);
+  }
 }
 
 void FvmSolver::build_pressure_matrix() {
   const int rows = static_cast<int>(p_cell_.size());
   CsrMatrix a;
   a.rows = rows;
+  a.first_row = p_first_row_;
   a.row_ptr.assign(static_cast<std::size_t>(rows) + 1, 0);
   const double inv_h2 = 1.0 / (h_ * h_);
   // At most 7 distinct entries per row (a periodic axis of 1 or 2 cells merges neighbours).
@@ -64,27 +84,29 @@ void FvmSolver::build_pressure_matrix() {
   };
   a.cols.reserve(static_cast<std::size_t>(rows) * 7);
   a.values.reserve(static_cast<std::size_t>(rows) * 7);
+  spread_momentum_diagonal();
   for (int r = 0; r < rows; ++r) {
     count = 0;
-    add(r, r == p_ref_row_ ? 1.0 : 0.0);
+    const int self = p_first_row_ + r;
+    add(self, self == p_ref_row_ ? 1.0 : 0.0);
     const long idx = p_cell_[static_cast<std::size_t>(r)];
-    for (int ax = 0; ax < 3 && r != p_ref_row_; ++ax) {
+    for (int ax = 0; ax < 3 && self != p_ref_row_; ++ax) {
       const Component& comp = comp_[static_cast<std::size_t>(ax)];
       const auto& ap = grid_.apertures(ax);
+      const auto& a_face = a_face_[static_cast<std::size_t>(ax)];
       const long st = p_row_.stride(ax);
       for (const int s : {-1, 1}) {
         const long f = s < 0 ? idx : idx + st;
-        const int urow = comp.row[static_cast<std::size_t>(f)];
-        if (urow < 0) continue;
+        if (comp.row[static_cast<std::size_t>(f)] < 0) continue;
         const double e = face_average(eps_, ax, f);
-        const double d = e * e * ap[static_cast<std::size_t>(f)] / comp.a[urow] * inv_h2;
+        const double d = e * e * ap[static_cast<std::size_t>(f)] / a_face[static_cast<std::size_t>(f)] * inv_h2;
         const int nrow = p_row_[static_cast<std::size_t>(idx + s * st)];
-        if (nrow == r) continue;                   // a one-cell periodic axis couples a cell to itself
+        if (nrow == self) continue;                // a one-cell periodic axis couples a cell to itself
         if (nrow < 0) {
-          add(r, 2.0 * d);                         // outlet face: p = 0 half a cell away
+          add(self, 2.0 * d);                      // outlet face: p = 0 half a cell away
           continue;
         }
-        add(r, d);
+        add(self, d);
         if (nrow != p_ref_row_) add(nrow, -d);
       }
     }
@@ -148,7 +170,7 @@ void FvmSolver::pressure_corrector(bool final) {
       div += face_average(eps_, ax, hi) * ap[static_cast<std::size_t>(hi)] * hb[static_cast<std::size_t>(hi)] -
              face_average(eps_, ax, idx) * ap[static_cast<std::size_t>(idx)] * hb[static_cast<std::size_t>(idx)];
     }
-    p_rhs_[static_cast<std::size_t>(r)] = r == p_ref_row_ ? 0.0 : -div * inv_h - deps_dt_[static_cast<std::size_t>(idx)];
+    p_rhs_[static_cast<std::size_t>(r)] = p_first_row_ + r == p_ref_row_ ? 0.0 : -div * inv_h - deps_dt_[static_cast<std::size_t>(idx)];
     if (!p_bc_.empty()) p_rhs_[static_cast<std::size_t>(r)] += p_bc_[static_cast<std::size_t>(r)];
     p_x_[static_cast<std::size_t>(r)] = p_[static_cast<std::size_t>(idx)];
   }

@@ -73,20 +73,17 @@ void FvmSolver::build_component(int c) {
     for (int j = 0; j < grid_.node_count(c, 1); ++j) {
       for (int i = 0; i < grid_.node_count(c, 0); ++i) {
         if (kinds(i, j, k) != static_cast<std::uint8_t>(NodeKind::active)) continue;
-        comp.row(i, j, k) = static_cast<int>(comp.node.size());
         comp.node.push_back(static_cast<long>(comp.row.index(i, j, k)));
       }
     }
   }
-  for (int a = 0; a < 3; ++a) fill_shared_ghosts(comp.row, a);
   const int rows = static_cast<int>(comp.node.size());
   comp.link_id.assign(static_cast<std::size_t>(rows), -1);
-  // This rank's rows come after the lower ranks' (hypre's layout): columns are global row numbers.
-  int first_row = 0;
-  MPI_Exscan(&rows, &first_row, 1, MPI_INT, MPI_SUM, comm_);
-  int rank = 0;
-  MPI_Comm_rank(comm_, &rank);
-  if (rank == 0) first_row = 0;   // MPI_Exscan leaves rank 0's result undefined
+  // This rank's rows come after the lower ranks' (hypre's layout); comp.row holds global row numbers, the
+  // neighbouring blocks' in the ghost planes.
+  const int first_row = rows_before(rows);
+  for (int r = 0; r < rows; ++r) comp.row[static_cast<std::size_t>(comp.node[static_cast<std::size_t>(r)])] = first_row + r;
+  for (int a = 0; a < 3; ++a) fill_shared_ghosts(comp.row, a);
   CsrMatrix& m = comp.m;
   m = CsrMatrix{.rows = rows, .first_row = first_row, .row_ptr = {0}, .cols = {}, .values = {}};
   m.cols.reserve(static_cast<std::size_t>(rows) * 7);
@@ -99,7 +96,8 @@ void FvmSolver::build_component(int c) {
     std::array<int, 7> neighbour{};
     std::array<int, 7> cols{};
     int count = 0;
-    cols[static_cast<std::size_t>(count++)] = r;
+    const int self = first_row + r;
+    cols[static_cast<std::size_t>(count++)] = self;
     bool interior = true;
     for (int dir = 0; dir < 6; ++dir) {
       const long nb = idx + (dir % 2 == 1 ? 1 : -1) * comp.row.stride(dir / 2);
@@ -129,14 +127,14 @@ void FvmSolver::build_component(int c) {
       while (cols[static_cast<std::size_t>(at)] != col) ++at;
       return start + at;
     };
-    for (int q = 0; q < distinct; ++q) m.cols.push_back(first_row + cols[static_cast<std::size_t>(q)]);
+    for (int q = 0; q < distinct; ++q) m.cols.push_back(cols[static_cast<std::size_t>(q)]);
     m.row_ptr.push_back(start + distinct);
     auto& slot = comp.slot[static_cast<std::size_t>(r)];
-    slot[0] = position(r);
+    slot[0] = position(self);
     for (int dir = 0; dir < 6; ++dir) {
       const int col = neighbour[static_cast<std::size_t>(dir)];
       // A one-cell periodic axis makes a node its own neighbour: that link contributes nothing (-2).
-      if (col >= 0) slot[static_cast<std::size_t>(dir) + 1] = col == r ? -2 : position(col);
+      if (col >= 0) slot[static_cast<std::size_t>(dir) + 1] = col == self ? -2 : position(col);
     }
     if (interior) continue;
     const long sx = n[0] + 3;
@@ -256,6 +254,14 @@ void FvmSolver::fill_cell_ghosts(BlockField<double>& field) const {
     if (!grid_.periodic(a)) field.fill_zero_gradient(a);
     fill_shared_ghosts(field, a);
   }
+}
+
+int FvmSolver::rows_before(int rows) const {
+  int before = 0;
+  MPI_Exscan(&rows, &before, 1, MPI_INT, MPI_SUM, comm_);
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  return rank == 0 ? 0 : before;   // MPI_Exscan leaves rank 0's result undefined
 }
 
 double FvmSolver::sum_over_ranks(double local) const {

@@ -164,7 +164,7 @@ class FvmSolver {
  private:
   struct Component {
     std::vector<long> node;                    // padded index of each unknown
-    BlockField<int> row;                       // unknown number of each node, -1 if not active
+    BlockField<int> row;                       // global row of each node (ghost planes: the neighbours'), -1 if not active
     std::vector<int> link_id;                  // per unknown: index into links, -1 when all six are active
     std::vector<std::array<NodeLink, 6>> links;
     CsrMatrix m;                               // momentum rows, global columns (pattern fixed at construction)
@@ -178,6 +178,7 @@ class FvmSolver {
   void build_opening_boundaries();
   void add_outlet_pressures();
   void build_pressure_matrix();
+  void spread_momentum_diagonal();
   void assemble_momentum(int c, bool convection = true);
   void compute_drive_response();
   void solve_momentum(int c);
@@ -203,6 +204,8 @@ class FvmSolver {
       field.fill_periodic(a, grid_.cells()[static_cast<std::size_t>(a)]);
     }
   }
+  /// The rows of the lower ranks: this rank's first global row (collective).
+  [[nodiscard]] int rows_before(int rows) const;
   /// Over the ranks: the sum, or the largest value (collective).
   [[nodiscard]] double sum_over_ranks(double local) const;
   [[nodiscard]] double max_over_ranks(double local) const;
@@ -239,7 +242,9 @@ class FvmSolver {
   BlockField<double> p_;                     // kinematic pressure (periodic part), m^2/s^2
   BlockField<int> p_row_;
   std::vector<long> p_cell_;
-  int p_ref_row_ = -1;                       // pinned cell when no outlet fixes the pressure level
+  int p_first_row_ = 0;                      // this rank's first pressure row (p_row_ holds global rows)
+  int p_ref_row_ = -1;                       // pinned cell (global row) when no outlet fixes the pressure level
+  std::array<BlockField<double>, 3> a_face_; // momentum diagonal A on the velocity nodes (spread_momentum_diagonal)
   std::vector<double> p_rhs_, p_x_;
   PressureSolver pressure_;
 
