@@ -23,10 +23,6 @@ PressureCoupling pressure_coupling_from_name(std::string_view name) {
 FvmSolver::FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const PisoSettings& piso, const FlowDrive& drive,
                      MPI_Comm comm)
     : grid_(grid), comm_(comm), fluid_(fluid), piso_(piso), drive_(drive), h_(grid.dx_m()), pressure_(comm) {
-  if (grid.slabs() != nullptr && grid.slabs()->size() > 1) {
-    // The grid and its halo are distributed; the momentum and pressure rows are not yet (docs/cfd-dem.md, step 2).
-    throw std::logic_error("FvmSolver: a grid split over several ranks is not solved yet (issue #28, step 2)");
-  }
   if (!(fluid.density_kg_m3 > 0.0) || !(fluid.kinematic_viscosity_m2_s > 0.0)) {
     throw hs::common::ConfigError(fmt::format("FVM: density ({} kg/m^3) and kinematic viscosity ({} m^2/s) must be > 0",
                                               fluid.density_kg_m3, fluid.kinematic_viscosity_m2_s));

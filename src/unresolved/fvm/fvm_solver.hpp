@@ -83,6 +83,8 @@ struct StepStats {
 /// central convection linearised with the old fluxes (icoFoam's numerics), PISO with the pressure
 /// Laplacian coefficient eps^2 / A (model A). The dev2 transpose stress term vanishes for uniform eps and
 /// is not included yet.
+/// On a grid over z-slabs (FvmGrid's `slabs`) every rank of `comm` steps its own block: rows numbered globally,
+/// ghost planes through the halo, sums over the ranks (docs/cfd-dem.md "Distributed CFD-DEM", step 2).
 class FvmSolver {
  public:
   FvmSolver(const FvmGrid& grid, const FluidProperties& fluid, const PisoSettings& piso, const FlowDrive& drive,

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -160,18 +162,58 @@ TEST(FvmGridSlabs, ACellFieldsGhostsAreTheWholeGridsOnEveryBlock) {
   }
 }
 
-TEST(FvmGridSlabs, TheSolverOnOneBlockIsTheSolverOnTheWholeGrid) {
-  // At one rank the block is the whole grid, but the solver takes the distributed paths: its ghost planes along z
-  // come through exchange_halo (the periodic wrap through MPI), its sums and maxima through MPI. Both tubes (the
-  // periodic one held at a flow rate, the open one between its inlet and outlet) must follow the whole grid's solver
-  // bit for bit over 20 steps.
+/// The largest |block - whole| over this block's face nodes (ghosts included) and over its cells' pressures, each
+/// over the whole grid's largest magnitude of that field; the maximum over the ranks.
+double largest_relative_difference(const FvmSolver& block, const FvmSolver& whole) {
+  const int first = block.grid().first_plane();
+  const auto& n = block.grid().cells();
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const auto& b = block.face_velocity(c);
+    const auto& w = whole.face_velocity(c);
+    double scale = 0.0;
+    for (const double v : w.data()) scale = std::max(scale, std::abs(v));
+    for (int k = -1; k <= n[2] + 1; ++k) {
+      for (int j = -1; j <= n[1] + 1; ++j) {
+        for (int i = -1; i <= n[0] + 1; ++i) worst = std::max(worst, std::abs(b(i, j, k) - w(i, j, first + k)) / scale);
+      }
+    }
+  }
+  double p_scale = 0.0;
+  const auto& nw = whole.grid().cells();
+  for (int k = 0; k < nw[2]; ++k) {
+    for (int j = 0; j < nw[1]; ++j) {
+      for (int i = 0; i < nw[0]; ++i) p_scale = std::max(p_scale, std::abs(whole.cell_pressure_Pa(i, j, k)));
+    }
+  }
+  for (int k = 0; k < n[2]; ++k) {
+    for (int j = 0; j < n[1]; ++j) {
+      for (int i = 0; i < n[0]; ++i) {
+        worst = std::max(worst, std::abs(block.cell_pressure_Pa(i, j, k) - whole.cell_pressure_Pa(i, j, first + k)) / p_scale);
+      }
+    }
+  }
+  double all = 0.0;
+  MPI_Allreduce(&worst, &all, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return all;
+}
+
+TEST(FvmGridSlabs, TheSolverOnBlocksFollowsTheWholeGrid) {
+  // The plasma alone over 100 steps, both tubes (the periodic one held at a flow rate, the open one between its inlet
+  // and outlet), each rank's block against the whole grid solved on every rank alone. At one rank the block takes the
+  // distributed paths (ghost planes through exchange_halo, the periodic wrap through MPI; sums through MPI) and must
+  // follow the whole grid bit for bit. On several ranks the AMG preconditioner differs (coarsening and smoothing per
+  // rank), so both solve to 1e-12: each step's fields then differ by up to cond x 1e-12 (cond ~ 1e3 for the pressure
+  // matrix of this 10 x 10 x 20 grid), and 100 steps of a dissipative flow do not amplify it: 1e-9 of the fields'
+  // largest values (measured: 1.1e-13 to 4.5e-13 at np 2 and 4).
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
-  if (size > 1) GTEST_SKIP() << "the solver refuses a grid over several ranks for now (step 2 of the plan)";
   for (const bool open : {false, true}) {
     const WholeAndBlock grids(open);
     const FluidProperties plasma{.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6};
-    const PisoSettings piso{.dt_s = 1e-5};   // viscous number nu dt / dx^2 = 1.3, Courant ~ 0.01
+    // Viscous number nu dt / dx^2 = 1.3, Courant ~ 0.01; tight solves (see above).
+    const PisoSettings piso{.dt_s = 1e-5, .pressure = {.tolerance = 1e-12, .rel_tol = 0.0, .max_iterations = 1000},
+                            .momentum_tolerance = 1e-12};
     FlowDrive drive{};
     if (!open) {
       drive = {.mode = FlowDrive::Mode::flow_rate, .axis = 2,
@@ -179,34 +221,22 @@ TEST(FvmGridSlabs, TheSolverOnOneBlockIsTheSolverOnTheWholeGrid) {
     }
     FvmSolver whole(grids.whole, plasma, piso, drive, MPI_COMM_SELF);
     FvmSolver block(grids.block, plasma, piso, drive, MPI_COMM_WORLD);
-    for (int s = 0; s < 20; ++s) {
+    for (int s = 0; s < 100; ++s) {
       whole.step();
       block.step();
     }
-    int different = 0;
-    for (int c = 0; c < 3; ++c) different += differences(block.face_velocity(c), whole.face_velocity(c), 0);
-    for (int k = 0; k < kLength / (kDiameter / kAcross); ++k) {
-      for (int j = 0; j < kAcross; ++j) {
-        for (int i = 0; i < kAcross; ++i) different += block.cell_pressure_Pa(i, j, k) != whole.cell_pressure_Pa(i, j, k) ? 1 : 0;
-      }
+    const double difference = largest_relative_difference(block, whole);
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0) std::printf("%s tube, %d ranks: largest relative difference %.3g\n", open ? "open" : "periodic", size, difference);
+    if (size == 1) {
+      EXPECT_EQ(difference, 0.0) << (open ? "open" : "periodic");
+    } else {
+      EXPECT_LE(difference, 1e-9) << (open ? "open" : "periodic");
     }
-    EXPECT_EQ(different, 0) << (open ? "open" : "periodic");
-    EXPECT_GT(std::abs(block.flow_rate_m3_s(2)), 0.0);
+    EXPECT_NEAR(block.flow_rate_m3_s(2), whole.flow_rate_m3_s(2), 1e-9 * std::abs(whole.flow_rate_m3_s(2)));
+    EXPECT_GT(std::abs(whole.flow_rate_m3_s(2)), 0.0);
   }
-}
-
-TEST(FvmGridSlabs, TheSolverRefusesAGridOverSeveralRanksForNow) {
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  if (size == 1) GTEST_SKIP() << "one block is the whole grid: the solver runs it";
-  const hs::common::Tube shape = tube();
-  const FvmGridSpec s = spec(false);
-  const hs::common::CartesianDecomposition slabs({.global_nodes = {kAcross, kAcross, 20}, .periodic = {false, false, true},
-                                                  .ranks_per_axis = {1, 1, 0}, .ghost = 2},
-                                                 MPI_COMM_WORLD);
-  const FvmGrid block(shape, s, &slabs);
-  EXPECT_THROW(FvmSolver(block, {.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6}, {.dt_s = 1e-4}, {}),
-               std::logic_error);
 }
 
 }  // namespace
