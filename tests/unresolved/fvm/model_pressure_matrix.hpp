@@ -14,6 +14,16 @@ namespace hs::unresolved::pressure_model {
 
 constexpr int kN = 20;   // cells per side: 8000 rows, a few ms per set-up
 
+/// Appends one row, given as (column, value) pairs in any order, to a CSR matrix being built row by row.
+inline void append_row(CsrMatrix& a, std::vector<std::pair<int, double>> row) {
+  std::sort(row.begin(), row.end());
+  for (const auto& [col, v] : row) {
+    a.cols.push_back(col);
+    a.values.push_back(v);
+  }
+  a.row_ptr.push_back(static_cast<int>(a.cols.size()));
+}
+
 /// The model-A pressure operator on a kN^3 box: face coefficients eps_f^2 (eps the mean of the two cells), a
 /// fixed-pressure boundary half a cell away (2 eps^2 on the diagonal), so it is SPD like the solver's.
 inline CsrMatrix pressure_matrix(const std::vector<double>& eps) {
@@ -42,12 +52,7 @@ inline CsrMatrix pressure_matrix(const std::vector<double>& eps) {
           }
         }
         row.emplace_back(r, diag);
-        std::sort(row.begin(), row.end());
-        for (const auto& [col, v] : row) {
-          a.cols.push_back(col);
-          a.values.push_back(v);
-        }
-        a.row_ptr.push_back(static_cast<int>(a.cols.size()));
+        append_row(a, std::move(row));
       }
     }
   }

@@ -58,12 +58,7 @@ CsrMatrix momentum_matrix(double peclet) {
           }
         }
         row.emplace_back(id(i, j, k), diag);
-        std::sort(row.begin(), row.end());
-        for (const auto& [col, v] : row) {
-          a.cols.push_back(col);
-          a.values.push_back(v);
-        }
-        a.row_ptr.push_back(static_cast<int>(a.cols.size()));
+        pressure_model::append_row(a, std::move(row));
       }
     }
   }
