@@ -60,7 +60,7 @@ double shortley_weller(const auto& comp, int lid, int dir) {
 void FvmSolver::assemble_momentum(int c, bool convection) {
   Component& comp = comp_[static_cast<std::size_t>(c)];
   const long rows = static_cast<long>(comp.node.size());
-  double* val = comp.m.values.data();
+  const MatrixEntries val = comp.solver->entries();
   const double dt = piso_.dt_s;
   const double rho = fluid_.density_kg_m3;
   const double nu_h2 = fluid_.kinematic_viscosity_m2_s / (h_ * h_);
@@ -88,7 +88,10 @@ void FvmSolver::assemble_momentum(int c, bool convection) {
       diag += d;
       conv_diag -= conv;
       if (link.type == NodeLink::Type::active) {
-        val[slot[static_cast<std::size_t>(dir) + 1]] = -d + conv;
+        // A periodic axis of two cells: both of its links reach the same node, whose one entry holds their sum.
+        const int at = slot[static_cast<std::size_t>(dir) + 1];
+        const bool second_link = dir % 2 == 1 && slot[static_cast<std::size_t>(dir)] == at;
+        val[at] = (second_link ? val[at] : 0.0) - d + conv;
       } else {
         rhs += (d - conv) * link.value;
       }
@@ -98,7 +101,6 @@ void FvmSolver::assemble_momentum(int c, bool convection) {
     comp.a[r] = piso_.coupling == PressureCoupling::projection ? e / dt + ks / rho : diag;
     comp.b[r] = rhs;
   }
-  comp.solver->set_values(comp.m.values);
 }
 
 void FvmSolver::solve_momentum(int c) {

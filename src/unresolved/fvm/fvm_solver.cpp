@@ -80,8 +80,7 @@ void FvmSolver::build_component(int c) {
   const int first_row = rows_before(rows);
   for (int r = 0; r < rows; ++r) comp.row[static_cast<std::size_t>(comp.node[static_cast<std::size_t>(r)])] = first_row + r;
   for (int a = 0; a < 3; ++a) fill_shared_ghosts(comp.row, a);
-  CsrMatrix& m = comp.m;
-  m = CsrMatrix{.rows = rows, .first_row = first_row, .row_ptr = {0}, .cols = {}, .values = {}};
+  CsrMatrix m{.rows = rows, .first_row = first_row, .row_ptr = {0}, .cols = {}, .values = {}};
   m.cols.reserve(static_cast<std::size_t>(rows) * 7);
   comp.slot.assign(static_cast<std::size_t>(rows), std::array<int, 7>{-1, -1, -1, -1, -1, -1, -1});
   const auto& n = grid_.cells();
@@ -147,6 +146,13 @@ void FvmSolver::build_component(int c) {
   m.values.assign(m.cols.size(), 1.0);
   comp.solver = std::make_unique<MomentumSolver>(comm_);
   comp.solver->set_matrix(m);
+  // The assembly writes straight into the solver's storage: the slots become places there.
+  const std::vector<int>& place = comp.solver->positions();
+  for (auto& slot : comp.slot) {
+    for (int& s : slot) {
+      if (s >= 0) s = place[static_cast<std::size_t>(s)];
+    }
+  }
   comp.x = Eigen::VectorXd::Zero(rows);
   comp.b = Eigen::VectorXd::Zero(rows);
   comp.a = Eigen::VectorXd::Ones(rows);

@@ -169,9 +169,8 @@ class FvmSolver {
     BlockField<int> row;                       // global row of each node (ghost planes: the neighbours'), -1 if not active
     std::vector<int> link_id;                  // per unknown: index into links, -1 when all six are active
     std::vector<std::array<NodeLink, 6>> links;
-    CsrMatrix m;                               // momentum rows, global columns (pattern fixed at construction)
-    std::unique_ptr<MomentumSolver> solver;    // holds m's pattern; takes its values after every assembly
-    std::vector<std::array<int, 7>> slot;      // positions in m.values: diagonal, then 6 directions
+    std::unique_ptr<MomentumSolver> solver;    // the momentum rows (pattern fixed at construction) and their solve
+    std::vector<std::array<int, 7>> slot;      // places in solver->entries(): diagonal, then 6 directions
     Eigen::VectorXd x, b, a, hbya;             // unknowns, source without grad p, diagonal the pressure uses, H/A
   };
 

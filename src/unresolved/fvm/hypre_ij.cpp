@@ -54,7 +54,7 @@ void HypreVector::copy_to(std::span<double> v) const {
   std::copy_n(data, rows_, v.begin());
 }
 
-HypreMatrix::HypreMatrix(MPI_Comm comm, const CsrMatrix& a) : a_(a) {
+HypreMatrix::HypreMatrix(MPI_Comm comm, const CsrMatrix& a) : rows_(a.rows), first_row_(a.first_row) {
   const int n = a.rows;
   const int lo = a.first_row;
   long mine = n;
@@ -72,7 +72,10 @@ HypreMatrix::HypreMatrix(MPI_Comm comm, const CsrMatrix& a) : a_(a) {
   std::vector<HYPRE_BigInt> cols(a.cols.begin(), a.cols.end());
   HYPRE_IJMatrixSetValues(ij_, n, sizes.data(), rows.data(), cols.data(), a.values.data());
   HYPRE_IJMatrixAssemble(ij_);
-  position_ = entry_positions();
+  position_ = entry_positions(a);
+  if (position_.empty()) {
+    throw std::logic_error("HypreMatrix: hypre did not keep every entry of the pattern in place");
+  }
 }
 
 HypreMatrix::~HypreMatrix() { HYPRE_IJMatrixDestroy(ij_); }
@@ -83,25 +86,20 @@ HYPRE_ParCSRMatrix HypreMatrix::par() const {
   return static_cast<HYPRE_ParCSRMatrix>(object);
 }
 
-bool HypreMatrix::same_pattern(const CsrMatrix& a) const {
-  return !position_.empty() && a.rows == a_.rows && a.first_row == a_.first_row && a.row_ptr == a_.row_ptr &&
-         a.cols == a_.cols;
+MatrixEntries HypreMatrix::entries() const {
+  hypre_ParCSRMatrix* par_csr = par();
+  return {.own_columns = hypre_CSRMatrixData(hypre_ParCSRMatrixDiag(par_csr)),
+          .other_columns = hypre_CSRMatrixData(hypre_ParCSRMatrixOffd(par_csr)),
+          .own_count = hypre_CSRMatrixNumNonzeros(hypre_ParCSRMatrixDiag(par_csr))};
 }
 
 void HypreMatrix::update_values(std::span<const double> values) {
-  hypre_ParCSRMatrix* par_csr = par();
-  HYPRE_Complex* diag = hypre_CSRMatrixData(hypre_ParCSRMatrixDiag(par_csr));
-  HYPRE_Complex* offd = hypre_CSRMatrixData(hypre_ParCSRMatrixOffd(par_csr));
-  const int diag_nnz = hypre_CSRMatrixNumNonzeros(hypre_ParCSRMatrixDiag(par_csr));
-  const std::size_t nnz = a_.values.size();
-  for (std::size_t q = 0; q < nnz; ++q) {
-    const int at = position_[q];
-    (at < diag_nnz ? diag[at] : offd[at - diag_nnz]) = values[q];
-  }
-  std::copy_n(values.begin(), nnz, a_.values.begin());
+  const MatrixEntries to = entries();
+  const std::size_t nnz = position_.size();
+  for (std::size_t q = 0; q < nnz; ++q) to[position_[q]] = values[q];
 }
 
-std::vector<int> HypreMatrix::entry_positions() const {
+std::vector<int> HypreMatrix::entry_positions(const CsrMatrix& a) const {
   hypre_ParCSRMatrix* par_csr = par();
   const hypre_CSRMatrix* diag = hypre_ParCSRMatrixDiag(par_csr);
   const hypre_CSRMatrix* offd = hypre_ParCSRMatrixOffd(par_csr);
@@ -113,10 +111,10 @@ std::vector<int> HypreMatrix::entry_positions() const {
   const HYPRE_Int diag_nnz = hypre_CSRMatrixNumNonzeros(diag);
   const bool has_offd = hypre_CSRMatrixNumNonzeros(offd) != 0;
   const auto first = static_cast<long>(hypre_ParCSRMatrixFirstColDiag(par_csr));
-  std::vector<int> position(a_.values.size(), -1);
-  for (int r = 0; r < a_.rows; ++r) {
-    for (int q = a_.row_ptr[static_cast<std::size_t>(r)]; q < a_.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
-      const long col = a_.cols[static_cast<std::size_t>(q)];
+  std::vector<int> position(a.values.size(), -1);
+  for (int r = 0; r < a.rows; ++r) {
+    for (int q = a.row_ptr[static_cast<std::size_t>(r)]; q < a.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
+      const long col = a.cols[static_cast<std::size_t>(q)];
       int& at = position[static_cast<std::size_t>(q)];
       for (HYPRE_Int h = di[r]; h < di[r + 1] && at < 0; ++h) {
         if (static_cast<long>(dj[h]) + first == col) at = static_cast<int>(h);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "unresolved/fvm/csr_matrix.hpp"
+#include "unresolved/fvm/matrix_entries.hpp"
 
 namespace hs::unresolved {
 
@@ -40,9 +41,9 @@ class HypreVector {
   int rows_;
 };
 
-/// A CsrMatrix assembled into hypre. Its values can be replaced in place while the pattern stays (no new
-/// assembly: hypre splits the rows into a diagonal block and an off-rank block, and each entry's place in them is
-/// found once).
+/// A CsrMatrix assembled into hypre (no copy is kept: three momentum matrices and the pressure one would each be
+/// held twice). Its values can be replaced in place while the pattern stays: hypre splits the rows into a block of
+/// this rank's columns and one of the others', and each entry's place in them is found once.
 class HypreMatrix {
  public:
   HypreMatrix(MPI_Comm comm, const CsrMatrix& a);
@@ -51,23 +52,26 @@ class HypreMatrix {
   HypreMatrix& operator=(const HypreMatrix&) = delete;
 
   [[nodiscard]] HYPRE_ParCSRMatrix par() const;
-  [[nodiscard]] const CsrMatrix& csr() const { return a_; }
+  [[nodiscard]] int rows() const { return rows_; }
+  [[nodiscard]] int first_row() const { return first_row_; }
   [[nodiscard]] long global_rows() const { return global_rows_; }
-  /// Whether `a` has this matrix's rows and pattern and every entry was located in hypre's blocks.
-  [[nodiscard]] bool same_pattern(const CsrMatrix& a) const;
-  /// Writes new values for the same pattern (same_pattern() must hold; values in the CsrMatrix's entry order).
+  /// Each entry's place in entries(), in the CsrMatrix's entry order.
+  [[nodiscard]] const std::vector<int>& positions() const { return position_; }
+  [[nodiscard]] MatrixEntries entries() const;
+  /// Writes new values for the pattern the matrix was built with (values in its entry order).
   void update_values(std::span<const double> values);
   /// ||b|| and ||b - A x|| over all ranks, r a work vector (hypre's own product fetches the neighbours' x).
   [[nodiscard]] std::pair<double, double> rhs_and_residual_norms(const HypreVector& b, const HypreVector& x,
                                                                  HypreVector& r) const;
 
  private:
-  [[nodiscard]] std::vector<int> entry_positions() const;
+  [[nodiscard]] std::vector<int> entry_positions(const CsrMatrix& a) const;
 
-  CsrMatrix a_;
-  std::vector<int> position_;   // each entry's place in hypre's diagonal block (0..) or after it the off-rank one
-  HYPRE_IJMatrix ij_ = nullptr;
+  int rows_ = 0;
+  int first_row_ = 0;
   long global_rows_ = 0;
+  std::vector<int> position_;   // each entry's place in entries()
+  HYPRE_IJMatrix ij_ = nullptr;
 };
 
 }  // namespace hs::unresolved

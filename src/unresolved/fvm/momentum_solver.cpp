@@ -41,17 +41,13 @@ MomentumSolver::~MomentumSolver() {
 }
 
 void MomentumSolver::set_matrix(const CsrMatrix& a) {
-  if (a_ != nullptr && a_->same_pattern(a)) {
-    set_values(a.values);
-    return;
-  }
   check_row_layout(comm_, a, "MomentumSolver");
-  diagonal_entry_.assign(static_cast<std::size_t>(a.rows), -1);
+  std::vector<int> diagonal_entry(static_cast<std::size_t>(a.rows), -1);
   for (int r = 0; r < a.rows; ++r) {
     for (int q = a.row_ptr[static_cast<std::size_t>(r)]; q < a.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
-      if (a.cols[static_cast<std::size_t>(q)] == a.first_row + r) diagonal_entry_[static_cast<std::size_t>(r)] = q;
+      if (a.cols[static_cast<std::size_t>(q)] == a.first_row + r) diagonal_entry[static_cast<std::size_t>(r)] = q;
     }
-    if (diagonal_entry_[static_cast<std::size_t>(r)] < 0) {
+    if (diagonal_entry[static_cast<std::size_t>(r)] < 0) {
       throw std::logic_error("MomentumSolver: row " + std::to_string(a.first_row + r) + " has no diagonal entry");
     }
   }
@@ -59,6 +55,10 @@ void MomentumSolver::set_matrix(const CsrMatrix& a) {
   if (bicgstab_ != nullptr) HYPRE_ParCSRBiCGSTABDestroy(static_cast<HYPRE_Solver>(bicgstab_));
   bicgstab_ = nullptr;
   a_ = std::make_unique<HypreMatrix>(comm_, a);
+  diagonal_position_.resize(diagonal_entry.size());
+  for (std::size_t r = 0; r < diagonal_entry.size(); ++r) {
+    diagonal_position_[r] = a_->positions()[static_cast<std::size_t>(diagonal_entry[r])];
+  }
   b_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
   x_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
   HYPRE_Solver solver = nullptr;
@@ -70,6 +70,16 @@ void MomentumSolver::set_matrix(const CsrMatrix& a) {
   // Once per pattern: the set-up allocates the work vectors.
   HYPRE_ParCSRBiCGSTABSetup(solver, a_->par(), b_->par(), x_->par());
   bicgstab_ = solver;
+}
+
+const std::vector<int>& MomentumSolver::positions() const {
+  if (a_ == nullptr) throw std::logic_error("MomentumSolver::positions before set_matrix");
+  return a_->positions();
+}
+
+MatrixEntries MomentumSolver::entries() const {
+  if (a_ == nullptr) throw std::logic_error("MomentumSolver::entries before set_matrix");
+  return a_->entries();
 }
 
 void MomentumSolver::set_values(std::span<const double> values) {
@@ -87,10 +97,8 @@ void MomentumSolver::multiply(std::span<const double> x, std::span<double> y) {
 MomentumSolve MomentumSolver::solve(std::span<const double> b, std::span<double> x, double tolerance,
                                     int max_iterations) {
   if (a_ == nullptr) throw std::logic_error("MomentumSolver::solve before set_matrix");
-  const std::vector<double>& values = a_->csr().values;
-  for (std::size_t r = 0; r < inverse_diagonal_.size(); ++r) {
-    inverse_diagonal_[r] = 1.0 / values[static_cast<std::size_t>(diagonal_entry_[r])];
-  }
+  const MatrixEntries values = a_->entries();
+  for (std::size_t r = 0; r < inverse_diagonal_.size(); ++r) inverse_diagonal_[r] = 1.0 / values[diagonal_position_[r]];
   b_->assign(b);
   x_->assign(x);
   auto* solver = static_cast<HYPRE_Solver>(bicgstab_);
@@ -105,7 +113,7 @@ MomentumSolve MomentumSolver::solve(std::span<const double> b, std::span<double>
   x_->copy_to(x);
   if (!(relative <= tolerance)) {
     // Capped (hypre then reports its recursively updated residual): measure the true one.
-    if (r_ == nullptr) r_ = std::make_unique<HypreVector>(comm_, a_->csr().first_row, a_->csr().rows);
+    if (r_ == nullptr) r_ = std::make_unique<HypreVector>(comm_, a_->first_row(), a_->rows());
     const auto [b_norm, r_norm] = a_->rhs_and_residual_norms(*b_, *x_, *r_);
     relative = b_norm > 0.0 ? r_norm / b_norm : r_norm;
   }

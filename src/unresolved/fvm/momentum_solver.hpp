@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "unresolved/fvm/csr_matrix.hpp"
+#include "unresolved/fvm/matrix_entries.hpp"
 
 namespace hs::unresolved {
 
@@ -23,8 +24,9 @@ struct MomentumSolve {
 
 /// Solves the (non-symmetric, diagonally dominant) momentum systems with hypre's BiCGSTAB preconditioned by the
 /// inverse diagonal, which needs nothing beyond each rank's rows: the method of Eigen's
-/// BiCGSTAB<DiagonalPreconditioner> it replaces, now on distributed rows. Every rank calls set_matrix(),
-/// set_values() and solve() with its own rows (collective calls; CsrMatrix's rank-order layout).
+/// BiCGSTAB<DiagonalPreconditioner> it replaces, now on distributed rows. Every rank calls set_matrix() and solve()
+/// with its own rows (collective calls; CsrMatrix's rank-order layout). The values live only in hypre: an assembly
+/// writes them through entries() at positions().
 class MomentumSolver {
  public:
   explicit MomentumSolver(MPI_Comm comm = MPI_COMM_WORLD);
@@ -32,9 +34,13 @@ class MomentumSolver {
   MomentumSolver(const MomentumSolver&) = delete;
   MomentumSolver& operator=(const MomentumSolver&) = delete;
 
-  /// Hands over a matrix: assembled in hypre when its pattern is new, otherwise only its values are written.
+  /// Hands over a matrix, pattern and values (a set-up: the solver's work vectors are allocated).
   void set_matrix(const CsrMatrix& a);
-  /// New values for the pattern set last, in its entry order (the predictor's coefficients change every step).
+  /// Each entry of the matrix set last, in its entry order: its place in entries().
+  [[nodiscard]] const std::vector<int>& positions() const;
+  /// The values, to be rewritten in place (the predictor's coefficients change every step, the pattern never).
+  [[nodiscard]] MatrixEntries entries() const;
+  /// New values for the pattern set last, in its entry order (a copy: entries() spares it).
   void set_values(std::span<const double> values);
   /// y = A x (this rank's rows of both), with the values set last.
   void multiply(std::span<const double> x, std::span<double> y);
@@ -46,7 +52,7 @@ class MomentumSolver {
   MPI_Comm comm_;
   std::unique_ptr<HypreMatrix> a_;
   std::unique_ptr<HypreVector> b_, x_, r_;
-  std::vector<int> diagonal_entry_;      // position of each row's diagonal among its entries
+  std::vector<int> diagonal_position_;   // each row's diagonal in entries()
   std::vector<double> inverse_diagonal_; // the preconditioner, refreshed from the values before every solve
   void* bicgstab_ = nullptr;             // HYPRE_Solver (hypre types stay out of this header)
 };

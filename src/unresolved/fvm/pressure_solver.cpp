@@ -64,7 +64,7 @@ void PressureSolver::set_matrix(const CsrMatrix& a) {
 bool PressureSolver::can_reuse(const CsrMatrix& a) const {
   // The set-up is collective: every rank must make the same choice, so each rank's verdict is reduced.
   const auto local = [&] {
-    if (!reuse_.enabled || pcg_ == nullptr || stale_ || !a_->same_pattern(a)) return false;
+    if (!reuse_.enabled || pcg_ == nullptr || stale_ || !same_pattern(a)) return false;
     const std::vector<double> d = diagonal_of(a);
     for (std::size_t r = 0; r < d.size(); ++r) {
       const double d0 = setup_diagonal_[r];
@@ -78,9 +78,15 @@ bool PressureSolver::can_reuse(const CsrMatrix& a) const {
   return all == 1;
 }
 
+bool PressureSolver::same_pattern(const CsrMatrix& a) const {
+  return a.rows == pattern_.rows && a.first_row == pattern_.first_row && a.row_ptr == pattern_.row_ptr &&
+         a.cols == pattern_.cols;
+}
+
 void PressureSolver::build(const CsrMatrix& a) {
   destroy();
   a_ = std::make_unique<HypreMatrix>(comm_, a);
+  pattern_ = CsrMatrix{.rows = a.rows, .first_row = a.first_row, .row_ptr = a.row_ptr, .cols = a.cols, .values = {}};
   b_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
   x_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
   r_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
@@ -121,7 +127,7 @@ void PressureSolver::build(const CsrMatrix& a) {
 
 int PressureSolver::solve(const std::vector<double>& b, std::vector<double>& x, const SolveTolerance& tol) {
   if (a_ == nullptr || a_->global_rows() == 0) return 0;
-  const int n = a_->csr().rows;
+  const int n = a_->rows();
   b_->assign(b);
   x_->assign(x);
   const auto [b_norm, r_norm] = a_->rhs_and_residual_norms(*b_, *x_, *r_);

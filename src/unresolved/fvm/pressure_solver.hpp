@@ -62,10 +62,12 @@ class PressureSolver {
   void build(const CsrMatrix& a);
   /// Whether a's pattern is the hierarchy's and neither AmgReuse bound is passed.
   [[nodiscard]] bool can_reuse(const CsrMatrix& a) const;
+  [[nodiscard]] bool same_pattern(const CsrMatrix& a) const;
 
   MPI_Comm comm_;
   AmgReuse reuse_;
   std::unique_ptr<HypreMatrix> a_;
+  CsrMatrix pattern_;                        // a_'s rows and columns (hypre keeps the values)
   std::unique_ptr<HypreVector> b_, x_, r_;   // right-hand side, solution, residual work vector
   std::vector<double> setup_diagonal_;       // diagonal of the matrix the hierarchy was built on
   int fresh_iterations_ = 0;                 // most iterations of a solve while the hierarchy was fresh
