@@ -94,6 +94,8 @@ class FvmGrid {
   [[nodiscard]] long cell_count() const { return static_cast<long>(n_[0]) * n_[1] * n_[2]; }
   /// The corner of this block (the box's corner without slabs).
   [[nodiscard]] const hs::common::Vec3& origin_m() const { return lo_; }
+  /// The whole domain box (every block's the same).
+  [[nodiscard]] const hs::common::Box3& box_m() const { return spec_.box_m; }
   [[nodiscard]] bool periodic(int axis) const { return periodic_[static_cast<std::size_t>(axis)]; }
   [[nodiscard]] const SideCondition& side(int axis, int high) const { return spec_.sides[static_cast<std::size_t>(2 * axis + high)]; }
   [[nodiscard]] const hs::common::Shape& shape() const { return shape_; }

@@ -105,8 +105,7 @@ Vec3 FvmSolver::cell_velocity(int i, int j, int k) const {
 
 double FvmSolver::cell_pressure_Pa(int i, int j, int k) const {
   const Vec3 x = grid_.cell_centre_m(i, j, k);
-  // The box's corner: a block on slabs starts first_plane() cells above it along z.
-  const double corner = grid_.origin_m()[drive_.axis] - (drive_.axis == 2 ? grid_.first_plane() * h_ : 0.0);
+  const double corner = grid_.box_m().lo[drive_.axis];
   return fluid_.density_kg_m3 * (p_(i, j, k) + p_level_kin_ + drive_gradient_ * (x[drive_.axis] - corner));
 }
 
