@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/geometry/shape.hpp"
+#include "unresolved/dem/dem_slabs.hpp"
 #include "unresolved/dem/domain.hpp"
 #include "unresolved/dem/drag_limited_step.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
@@ -42,8 +43,10 @@ struct DemStepStats {
 class DemSystem {
  public:
   /// Throws ConfigError when the time step violates 0.1 min(t_Rayleigh, t_Hertz) or a periodic length is below
-  /// two neighbour cut-offs. `walls` (may be null) must outlive the system.
-  DemSystem(const DemSettings& settings, const hs::common::Shape* walls);
+  /// two neighbour cut-offs. `walls` (may be null) must outlive the system. `slabs` (may be null: the whole box
+  /// here) distributes the particles over z-slabs (dem_slabs.hpp); it must outlive the system, and every rank then
+  /// calls step(), initialize() and the other collective members together, each holding its slab's particles.
+  DemSystem(const DemSettings& settings, const hs::common::Shape* walls, DemSlabs* slabs = nullptr);
 
   ParticleStore& particles() { return particles_; }
   [[nodiscard]] const ParticleStore& particles() const { return particles_; }
@@ -93,6 +96,7 @@ class DemSystem {
 
   /// Re-evaluates the Hertz-time check with a measured relative speed (NumericalError if violated).
   void check_time_step_at(double max_relative_speed_m_s) const;
+  /// Over every rank's particles (collective with slabs).
   [[nodiscard]] double max_speed_m_s() const;
 
  private:
@@ -103,8 +107,12 @@ class DemSystem {
   void rebuild();
   void compute_forces();
 
+  /// The box this block integrates: the settings' box, or this rank's slab of it.
+  [[nodiscard]] const Domain& block_domain() const { return slabs_ != nullptr ? slabs_->block_domain() : settings_.domain; }
+
   DemSettings settings_;
   const hs::common::Shape* walls_;
+  DemSlabs* slabs_;
   HertzContactLaw law_;
   ParticleStore particles_;
   NeighborList list_;

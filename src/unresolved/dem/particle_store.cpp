@@ -2,6 +2,7 @@
 // Structure-of-arrays particle storage: adding, sorting and the periodic-image (ghost) halo.
 #include "unresolved/dem/particle_store.hpp"
 
+#include <bit>
 #include <stdexcept>
 #include <tuple>
 #include <type_traits>
@@ -109,11 +110,64 @@ std::size_t ParticleStore::add_ghost(std::size_t owner, const hs::common::Vec3& 
   return g;
 }
 
+std::size_t ParticleStore::add_remote_ghost(const ParticleState& p) {
+  const std::size_t g = size();
+  resize(g + 1);
+  ghost_owner_.push_back(remote_owner);
+  ghost_shift_.push_back({});
+  for (int a = 0; a < 3; ++a) {
+    pos_[a][g] = p.position_m[a];
+    vel_[a][g] = p.velocity_m_s[a];
+    omega_[a][g] = p.angular_velocity_rad_s[a];
+  }
+  radius_[g] = p.radius_m;
+  mass_[g] = p.mass_kg;
+  id_[g] = p.id;
+  inlet_opening_[g] = p.inlet_opening;
+  return g;
+}
+
+namespace {
+// A particle's columns travel as doubles; the id's 64 bits are carried as they are.
+double as_double(double v) { return v; }
+double as_double(std::int64_t v) { return std::bit_cast<double>(v); }
+double as_double(std::int32_t v) { return static_cast<double>(v); }
+template <typename T>
+T from_double(double v) {
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    return std::bit_cast<std::int64_t>(v);
+  } else {
+    return static_cast<T>(v);
+  }
+}
+}  // namespace
+
+void ParticleStore::pack_owned(std::size_t i, std::vector<double>& out) {
+  for_each_any_column([&](auto& c) { out.push_back(as_double(c[i])); });
+}
+
+std::size_t ParticleStore::packed_size() {
+  std::size_t n = 0;
+  for_each_any_column([&](auto&) { ++n; });
+  return n;
+}
+
+std::size_t ParticleStore::add_packed(const double* packed) {
+  clear_ghosts();
+  const std::size_t i = n_owned_;
+  resize(i + 1);
+  ++n_owned_;
+  std::size_t k = 0;
+  for_each_any_column([&](auto& c) { c[i] = from_double<typename std::remove_reference_t<decltype(c)>::value_type>(packed[k++]); });
+  return i;
+}
+
 void ParticleStore::update_ghosts() {
   const std::size_t n_ghosts = n_ghost();
   for (std::size_t k = 0; k < n_ghosts; ++k) {
     const std::size_t g = n_owned_ + k;
     const std::size_t o = ghost_owner_[k];
+    if (o == remote_owner) continue;
     for (int a = 0; a < 3; ++a) {
       pos_[a][g] = pos_[a][o] + ghost_shift_[k][a];
       vel_[a][g] = vel_[a][o];
@@ -127,6 +181,7 @@ void ParticleStore::fold_ghost_forces() {
   for (std::size_t k = 0; k < n_ghosts; ++k) {
     const std::size_t g = n_owned_ + k;
     const std::size_t o = ghost_owner_[k];
+    if (o == remote_owner) continue;
     for (int a = 0; a < 3; ++a) {
       force_[a][o] += force_[a][g];
       torque_[a][o] += torque_[a][g];

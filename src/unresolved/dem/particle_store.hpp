@@ -110,12 +110,26 @@ class ParticleStore {
   void clear_ghosts();
   /// Appends a ghost: a copy of owned particle `owner` displaced by `shift_m` (a periodic image).
   std::size_t add_ghost(std::size_t owner, const hs::common::Vec3& shift_m);
+  /// ghost_owner() of a copy of another rank's particle (DemSlabs refreshes it and takes its forces back).
+  static constexpr std::size_t remote_owner = static_cast<std::size_t>(-1);
+  /// Appends a copy of another rank's particle (position already shifted to this rank's side of a periodic seam).
+  std::size_t add_remote_ghost(const ParticleState& p);
   [[nodiscard]] std::size_t ghost_owner(std::size_t ghost) const { return ghost_owner_[ghost - n_owned_]; }
   [[nodiscard]] const hs::common::Vec3& ghost_shift_m(std::size_t ghost) const { return ghost_shift_[ghost - n_owned_]; }
-  /// Copies position (+ shift), velocity and angular velocity from the owners (the forward halo exchange).
+  /// Copies position (+ shift), velocity and angular velocity from the owners (the forward halo exchange); remote
+  /// ghosts are left to DemSlabs.
   void update_ghosts();
-  /// Adds the forces and torques accumulated on ghosts to their owners (the reverse halo exchange).
+  /// Adds the forces and torques accumulated on ghosts to their owners (the reverse halo exchange); remote ghosts
+  /// are left to DemSlabs, which folds them first (a remote ghost's owner may be a periodic image here).
   void fold_ghost_forces();
+
+  /// Every column of owned particle i (coupling data, wall history, id and inlet opening included) appended to
+  /// `out` as doubles: what a particle takes along when it moves to another rank.
+  void pack_owned(std::size_t i, std::vector<double>& out);
+  /// Appends an owned particle from pack_owned()'s doubles (removes all ghosts first); returns its index.
+  std::size_t add_packed(const double* packed);
+  /// How many doubles pack_owned() appends.
+  [[nodiscard]] std::size_t packed_size();
 
  private:
   template <typename F>
