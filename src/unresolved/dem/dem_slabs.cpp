@@ -15,7 +15,9 @@
 namespace hs::unresolved {
 namespace {
 
-constexpr int kGhostDoubles = 13;   // position, velocity, angular velocity, radius, mass, id, inlet opening
+// position, velocity, angular velocity, radius, mass, id, inlet opening; drag, rotational drag, fluid velocity,
+// external force (GhostCoupling)
+constexpr int kGhostDoubles = 21;
 constexpr int kSpringDoubles = 5;   // the pair's two ids and its tangential spring
 
 }  // namespace
@@ -136,6 +138,12 @@ void DemSlabs::exchange_ghosts(ParticleStore& particles, double width_m) {
       }
       o.insert(o.end(), {particles.radius_m()[i], particles.mass_kg()[i], std::bit_cast<double>(particles.id()[i]),
                          static_cast<double>(particles.inlet_opening()[i])});
+      const ParticleStore& read = particles;   // the const columns: reading must not switch the drag on
+      const std::size_t c = read.coupling_row(i);
+      o.insert(o.end(), {read.drag_coefficient_N_s_m()[c], read.rotational_drag_N_m_s()[c]});
+      for (const auto* v : {&read.fluid_velocity_m_s(), &read.external_force_N()}) {
+        o.insert(o.end(), {(*v)[0][c], (*v)[1][c], (*v)[2][c]});
+      }
     }
   }
   std::array<std::vector<double>, 2> in;
@@ -152,7 +160,11 @@ void DemSlabs::exchange_ghosts(ParticleStore& particles, double width_m) {
                                         .radius_m = g[9],
                                         .mass_kg = g[10],
                                         .id = std::bit_cast<std::int64_t>(g[11]),
-                                        .inlet_opening = static_cast<std::int32_t>(g[12])});
+                                        .inlet_opening = static_cast<std::int32_t>(g[12])},
+                                       {.drag_N_s_m = g[13],
+                                        .rotational_drag_N_m_s = g[14],
+                                        .fluid_velocity_m_s = {g[15], g[16], g[17]},
+                                        .external_force_N = {g[18], g[19], g[20]}});
     }
   }
 }
@@ -210,6 +222,21 @@ void DemSlabs::fold_ghost_forces(ParticleStore& particles) const {
         t[a][i] += in[s][6 * k + 3 + a];
       }
     }
+  }
+}
+
+void DemSlabs::fold_values(std::vector<double>& value) const {
+  std::array<std::vector<double>, 2> out;
+  std::array<std::vector<double>, 2> in;
+  for (std::size_t s = 0; s < 2; ++s) {
+    const auto first = static_cast<std::ptrdiff_t>(received_first_[s]);
+    out[s].assign(value.begin() + first, value.begin() + first + static_cast<std::ptrdiff_t>(received_count_[s]));
+    std::fill(value.begin() + first, value.begin() + first + static_cast<std::ptrdiff_t>(received_count_[s]), 0.0);
+    in[s].resize(sent_[s].size());
+  }
+  exchange(out, in, true, 60);
+  for (std::size_t s = 0; s < 2; ++s) {
+    for (std::size_t k = 0; k < sent_[s].size(); ++k) value[sent_[s][k]] += in[s][k];
   }
 }
 

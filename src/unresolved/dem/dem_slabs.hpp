@@ -43,13 +43,18 @@ class DemSlabs {
   /// id). Requires no ghosts. Returns the springs now computed here: `history` less what left, plus what came.
   ContactHistory migrate(ParticleStore& particles, const ContactHistory& history) const;
   /// Appends as remote ghosts the neighbours' particles (owned and their periodic images) within `width_m` of this
-  /// slab's faces, and remembers who sent what for the updates below.
+  /// slab's faces, with their coupling inputs (GhostCoupling), and remembers who sent what for the
+  /// updates below.
   void exchange_ghosts(ParticleStore& particles, double width_m);
   /// Refreshes the remote ghosts' position, velocity and angular velocity (after the local periodic images).
   void update_ghosts(ParticleStore& particles) const;
   /// Sends the forces and torques on remote ghosts to their owners, adds them there and clears them here (before
   /// ParticleStore::fold_ghost_forces, which takes them on to an owned particle when the owner was an image).
   void fold_ghost_forces(ParticleStore& particles) const;
+
+  /// The same for one value per particle (owned and ghosts, in the store's order): each remote ghost's value is
+  /// added to the particle it copies, on its rank, and cleared here.
+  void fold_values(std::vector<double>& value) const;
 
   /// Whether any rank's flag is set (rebuild decisions).
   [[nodiscard]] bool any(bool mine) const;

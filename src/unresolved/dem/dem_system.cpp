@@ -169,15 +169,12 @@ void DemSystem::set_time_step_s(double dt_s) {
 }
 
 DragLimitedStep DemSystem::drag_limited_step() {
-  // Its contact rates need the drag of the neighbours' particles, which the ghost exchange does not carry yet (the
-  // coupling on slabs, issue #28 step 4).
-  if (slabs_ != nullptr) throw std::logic_error("DemSystem::drag_limited_step is not yet available on slabs");
   if (initialized_) {
     rebuild();   // keeps the forces (they move with their particles) and the springs (by id)
   } else {
     initialize();
   }
-  return hs::unresolved::drag_limited_step(particles_, list_, law_, wall_contacts_.get());
+  return hs::unresolved::drag_limited_step(particles_, list_, law_, wall_contacts_.get(), slabs_);
 }
 
 double DemSystem::max_speed_m_s() const {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The drag-limited DEM step: a Gershgorin bound on the overdamped contact network's relaxation rate.
 #include "unresolved/dem/drag_limited_step.hpp"
+#include "unresolved/dem/dem_slabs.hpp"
 #include "unresolved/dem/parallel_threshold.hpp"
 
 #include <omp.h>
@@ -37,10 +38,12 @@ ContactRate contact_rate(const PairConstants& k, double r_eff_m, double m_eff_kg
 }  // namespace
 
 DragLimitedStep drag_limited_step(const ParticleStore& p, const NeighborList& list, const HertzContactLaw& law,
-                                  const WallContacts* walls) {
+                                  const WallContacts* walls, const DemSlabs* slabs) {
   DragLimitedStep out;
   const std::size_t n = p.n_owned();
-  if (!p.drag_used()) {
+  // Every rank gives up or none does (the others would wait in the fold below).
+  const auto on_any_rank = [slabs](bool mine) { return slabs != nullptr ? slabs->any(mine) : mine; };
+  if (on_any_rank(!p.drag_used())) {
     out.reason = "no drag on the particles";
     return out;
   }
@@ -48,21 +51,27 @@ DragLimitedStep drag_limited_step(const ParticleStore& p, const NeighborList& li
   const auto& beta_r = p.rotational_drag_N_m_s();
   const auto& rad = p.radius_m();
   const auto& mass = p.mass_kg();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!(beta[i] > 0.0) || !(beta_r[i] > 0.0)) {
-      out.reason = "a particle without translational or rotational drag";
-      return out;
+  bool undragged = false;
+  for (std::size_t i = 0; i < n && !undragged; ++i) {
+    undragged = !(beta[i] > 0.0) || !(beta_r[i] > 0.0);
+    if (!undragged) {
+      out.inertial_time_s = std::max({out.inertial_time_s, mass[i] / beta[i], 0.4 * mass[i] * rad[i] * rad[i] / beta_r[i]});
     }
-    out.inertial_time_s = std::max({out.inertial_time_s, mass[i] / beta[i], 0.4 * mass[i] * rad[i] * rad[i] / beta_r[i]});
   }
-  // Per-particle mobilities and free drift, owned and ghosts (a ghost takes its owner's).
+  if (on_any_rank(undragged)) {
+    out.reason = "a particle without translational or rotational drag";
+    out.inertial_time_s = 0.0;
+    return out;
+  }
+  // Per-particle mobilities and free drift, owned and ghosts (an image takes its owner's, another rank's copy
+  // carries its own).
   const std::size_t n_all = p.size();
   std::vector<double> mob_n(n_all), mob_t(n_all);
   std::vector<std::array<double, 3>> drift(n_all);
   const auto& uf = p.fluid_velocity_m_s();
   const auto& fe = p.external_force_N();
   for (std::size_t k = 0; k < n_all; ++k) {
-    const std::size_t o = k < n ? k : p.ghost_owner(k);
+    const std::size_t o = p.coupling_row(k);
     mob_n[k] = 1.0 / beta[o];
     mob_t[k] = mob_n[k] + rad[o] * rad[o] / beta_r[o];
     for (std::size_t a = 0; a < 3; ++a) drift[k][a] = uf[a][o] + fe[a][o] * mob_n[k];
@@ -109,7 +118,10 @@ DragLimitedStep drag_limited_step(const ParticleStore& p, const NeighborList& li
   for (const auto& s : sums) {
     for (std::size_t k = 0; k < n_all; ++k) total[k] += s[k];
   }
-  for (std::size_t k = n; k < n_all; ++k) total[p.ghost_owner(k)] += total[k];
+  if (slabs != nullptr) slabs->fold_values(total);   // first: another rank's copy may be of an image here
+  for (std::size_t k = n; k < n_all; ++k) {
+    if (p.ghost_owner(k) != ParticleStore::remote_owner) total[p.ghost_owner(k)] += total[k];
+  }
   for (const double d : damping) out.damping_number = std::max(out.damping_number, d);
   if (walls != nullptr) {
     const PairConstants& kpw = law.particle_wall();
@@ -126,6 +138,11 @@ DragLimitedStep drag_limited_step(const ParticleStore& p, const NeighborList& li
     }
   }
   for (std::size_t i = 0; i < n; ++i) out.rate_bound_1_s = std::max(out.rate_bound_1_s, total[i]);
+  if (slabs != nullptr) {
+    out.rate_bound_1_s = slabs->max(out.rate_bound_1_s);
+    out.damping_number = slabs->max(out.damping_number);
+    out.inertial_time_s = slabs->max(out.inertial_time_s);
+  }
   out.time_step_s = out.rate_bound_1_s > 0.0 ? drag_limited_step_fraction / out.rate_bound_1_s
                                              : std::numeric_limits<double>::infinity();
   if (out.damping_number > drag_limited_max_damping_number) {

@@ -10,6 +10,8 @@
 
 namespace hs::unresolved {
 
+class DemSlabs;
+
 /// dt_DEM lambda <= drag_limited_step_fraction, lambda the bound below. In the overdamped limit the exponential
 /// Verlet step (exponential_verlet.hpp) is explicit Euler of x' = M F(x) (M the drag mobility): a contact mode of
 /// rate lambda relaxes by 1 - dt lambda per step, monotone for dt lambda <= 1, stable for < 2. 0.5 keeps half the
@@ -40,8 +42,11 @@ struct DragLimitedStep {
 /// a wall's mobility zero. delta is the larger of the current overlap and the Hertz overlap under the force the
 /// fluid can press the pair together with, |(w_i - w_j) . n| / (M_n,i + M_n,j) with w = u_f + F_ext / beta
 /// the free drift (pairs of the neighbour list and the wall candidates, so contacts about to form count too).
-/// Needs every owned particle to have beta > 0 and beta_r > 0 (drag_used()); `walls` may be null.
+/// Needs every owned particle to have beta > 0 and beta_r > 0 (drag_used()); `walls` may be null. With `slabs`
+/// (collective): over every rank's particles, the rates of contacts with another rank's particles summed on both
+/// sides, after DemSlabs::exchange_ghosts (a fresh rebuild) brought the ghosts' drag.
 [[nodiscard]] DragLimitedStep drag_limited_step(const ParticleStore& particles, const NeighborList& list,
-                                                const HertzContactLaw& law, const WallContacts* walls);
+                                                const HertzContactLaw& law, const WallContacts* walls,
+                                                const DemSlabs* slabs = nullptr);
 
 }  // namespace hs::unresolved

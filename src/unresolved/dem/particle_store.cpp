@@ -110,7 +110,7 @@ std::size_t ParticleStore::add_ghost(std::size_t owner, const hs::common::Vec3& 
   return g;
 }
 
-std::size_t ParticleStore::add_remote_ghost(const ParticleState& p) {
+std::size_t ParticleStore::add_remote_ghost(const ParticleState& p, const GhostCoupling& coupling) {
   const std::size_t g = size();
   resize(g + 1);
   ghost_owner_.push_back(remote_owner);
@@ -124,6 +124,12 @@ std::size_t ParticleStore::add_remote_ghost(const ParticleState& p) {
   mass_[g] = p.mass_kg;
   id_[g] = p.id;
   inlet_opening_[g] = p.inlet_opening;
+  drag_beta_[g] = coupling.drag_N_s_m;
+  rot_drag_[g] = coupling.rotational_drag_N_m_s;
+  for (int a = 0; a < 3; ++a) {
+    fluid_vel_[a][g] = coupling.fluid_velocity_m_s[a];
+    ext_force_[a][g] = coupling.external_force_N[a];
+  }
   return g;
 }
 

@@ -26,6 +26,15 @@ struct ParticleState {
   std::int32_t inlet_opening = no_inlet_opening;
 };
 
+/// What a copy of another rank's particle carries besides its ParticleState: its owner's drag, fluid velocity and
+/// external force (drag_limited_step() bounds the contact rates with them), kept in the ghost's own row.
+struct GhostCoupling {
+  double drag_N_s_m = 0.0;
+  double rotational_drag_N_m_s = 0.0;
+  hs::common::Vec3 fluid_velocity_m_s;
+  hs::common::Vec3 external_force_N;
+};
+
 /// Structure of arrays. Indices [0, n_owned()) are the particles this block owns and integrates;
 /// [n_owned(), size()) are ghosts: copies of particles (periodic images here, particles of neighbour blocks
 /// once the run is distributed) that only take part in contacts. A ghost carries its owner's id; forces
@@ -113,7 +122,13 @@ class ParticleStore {
   /// ghost_owner() of a copy of another rank's particle (DemSlabs refreshes it and takes its forces back).
   static constexpr std::size_t remote_owner = static_cast<std::size_t>(-1);
   /// Appends a copy of another rank's particle (position already shifted to this rank's side of a periodic seam).
-  std::size_t add_remote_ghost(const ParticleState& p);
+  std::size_t add_remote_ghost(const ParticleState& p, const GhostCoupling& coupling = {});
+  /// The row whose coupling columns hold particle k's: its own for owned and remote ghosts, the owner's for images.
+  [[nodiscard]] std::size_t coupling_row(std::size_t k) const {
+    if (k < n_owned_) return k;
+    const std::size_t o = ghost_owner_[k - n_owned_];
+    return o == remote_owner ? k : o;
+  }
   [[nodiscard]] std::size_t ghost_owner(std::size_t ghost) const { return ghost_owner_[ghost - n_owned_]; }
   [[nodiscard]] const hs::common::Vec3& ghost_shift_m(std::size_t ghost) const { return ghost_shift_[ghost - n_owned_]; }
   /// Copies position (+ shift), velocity and angular velocity from the owners (the forward halo exchange); remote

@@ -16,6 +16,7 @@
 #include "common/parallel/cartesian_decomposition.hpp"
 #include "unresolved/dem/dem_slabs.hpp"
 #include "unresolved/dem/dem_system.hpp"
+#include "unresolved/dem/drag_limited_step.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
 
@@ -58,8 +59,13 @@ void drag_towards_poiseuille(ParticleStore& p) {
 }
 
 /// Integrates the tube's particles: every one here (slabs null) or this rank's slab of them.
-/// `arrivals`: particles owned at the end by another rank than at the start, over all ranks.
-std::map<std::int64_t, Final> run(DemSlabs* slabs, long* list_builds = nullptr, long* arrivals = nullptr) {
+struct RunStats {
+  long list_builds = 0;
+  long arrivals = 0;            // particles owned at the end by another rank than at the start, over all ranks
+  DragLimitedStep step_bound;   // at the end
+};
+
+std::map<std::int64_t, Final> run(DemSlabs* slabs, RunStats* stats = nullptr) {
   const ParticleParams p = params();
   const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, kLength}, .radius_m = kRadius});
   const InsertionResult placed = insert_at_volume_fraction(tube, domain(), {.volume_fraction = 0.3, .radius_m = p.radius_m(), .seed = 7});
@@ -70,20 +76,25 @@ std::map<std::int64_t, Final> run(DemSlabs* slabs, long* list_builds = nullptr, 
       (void)dem.add_particle(x, {}, static_cast<std::int64_t>(k));
     }
   }
+  // Stokes drag and rotational drag of a sphere.
   const double beta = 3.0 * std::numbers::pi * kViscosity * p.diameter_m;
   auto& drag = dem.particles().drag_coefficient_N_s_m();
   std::fill(drag.begin(), drag.end(), beta);
+  auto& rotational_drag = dem.particles().rotational_drag_N_m_s();
+  std::fill(rotational_drag.begin(), rotational_drag.end(), std::numbers::pi * kViscosity * std::pow(p.diameter_m, 3));
   dem.set_force_hook(drag_towards_poiseuille);
   const std::vector<std::int64_t> at_start(dem.particles().id().begin(),
                                            dem.particles().id().begin() + static_cast<std::ptrdiff_t>(dem.particles().n_owned()));
   for (int s = 0; s < kSteps; ++s) dem.step();
-  if (list_builds != nullptr) *list_builds = static_cast<long>(dem.stats().list_builds);
-  if (arrivals != nullptr && slabs != nullptr) {
+  if (stats != nullptr) {
+    stats->list_builds = static_cast<long>(dem.stats().list_builds);
+    stats->step_bound = dem.drag_limited_step();
     long mine = 0;
     for (std::size_t i = 0; i < dem.particles().n_owned(); ++i) {
       mine += std::find(at_start.begin(), at_start.end(), dem.particles().id()[i]) == at_start.end() ? 1 : 0;
     }
-    MPI_Allreduce(&mine, arrivals, 1, MPI_LONG, MPI_SUM, slabs->comm());
+    stats->arrivals = mine;
+    if (slabs != nullptr) MPI_Allreduce(&mine, &stats->arrivals, 1, MPI_LONG, MPI_SUM, slabs->comm());
   }
 
   // Every rank's particles on every rank.
@@ -124,10 +135,12 @@ TEST(DemOnSlabs, FollowsOneRankHoldingEveryParticle) {
       {.global_nodes = {12, 12, kPlanes}, .periodic = {false, false, true}, .ranks_per_axis = {1, 1, 0}, .ghost = 1},
       MPI_COMM_WORLD);
   DemSlabs slabs(decomposition, domain(), kLength / kPlanes);
-  long builds = 0;
-  long arrivals = 0;
-  const std::map<std::int64_t, Final> alone = run(nullptr);
-  const std::map<std::int64_t, Final> distributed = run(&slabs, &builds, &arrivals);
+  RunStats one;
+  RunStats many;
+  const std::map<std::int64_t, Final> alone = run(nullptr, &one);
+  const std::map<std::int64_t, Final> distributed = run(&slabs, &many);
+  const long builds = many.list_builds;
+  const long arrivals = many.arrivals;
 
   ASSERT_EQ(distributed.size(), alone.size()) << "particles lost or duplicated";
   const double d = params().diameter_m;
@@ -151,9 +164,49 @@ TEST(DemOnSlabs, FollowsOneRankHoldingEveryParticle) {
   // pairs left behind 2.8e-3 d (np 2, checked).
   EXPECT_LE(worst_x, 1e-9);
   EXPECT_LE(worst_v, 1e-9);
+  // The drag-limited step bound sums each particle's contact rates, its contacts with other ranks' particles
+  // included: the same bound (round-off of the sums' order).
+  std::printf("drag-limited step: lambda %.6e 1/s alone, %.6e on slabs; applies %d / %d\n", one.step_bound.rate_bound_1_s,
+              many.step_bound.rate_bound_1_s, static_cast<int>(one.step_bound.applies), static_cast<int>(many.step_bound.applies));
+  EXPECT_GT(one.step_bound.rate_bound_1_s, 0.0) << "no contact: the bound would not be tested";
+  EXPECT_NEAR(many.step_bound.rate_bound_1_s, one.step_bound.rate_bound_1_s, 1e-12 * one.step_bound.rate_bound_1_s);
+  EXPECT_NEAR(many.step_bound.damping_number, one.step_bound.damping_number, 1e-12 * one.step_bound.damping_number);
+  EXPECT_EQ(many.step_bound.applies, one.step_bound.applies);
   if (size > 1) {
     EXPECT_GT(arrivals, 0) << "no particle crossed a slab face: the test would not test migration";
   }
+}
+
+// Three overlapping spheres in a row along the axis, the first below the slab face at z = 40 um (a face at np 2
+// and 4), the others above: the middle one's rate bound is the sum of its two contacts, one of which the rank
+// below computes (the first sphere has the smaller id). Without the rate of that contact sent back to the middle
+// sphere's rank the bound is half (checked: fails).
+TEST(DemOnSlabs, TheStepBoundSumsContactsAcrossAFace) {
+  const hs::common::CartesianDecomposition decomposition(
+      {.global_nodes = {12, 12, kPlanes}, .periodic = {false, false, true}, .ranks_per_axis = {1, 1, 0}, .ghost = 1},
+      MPI_COMM_WORLD);
+  DemSlabs slabs(decomposition, domain(), kLength / kPlanes);
+  const ParticleParams p = params();
+  const double d = p.diameter_m;
+  const auto bound = [&](DemSlabs* on) {
+    const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, kLength}, .radius_m = kRadius});
+    DemSystem dem({.params = p, .domain = domain(), .time_step_s = 0.05 * rayleigh_time_s(p)}, &tube, on);
+    const double middle = 40e-6 + 0.05 * d;
+    for (int k = 0; k < 3; ++k) {
+      const double z = middle + (k - 1) * 0.95 * d;
+      if (on == nullptr || (z >= on->lo_m() && z < on->hi_m())) (void)dem.add_particle({0, 0, z}, {}, k);
+    }
+    auto& beta = dem.particles().drag_coefficient_N_s_m();
+    std::fill(beta.begin(), beta.end(), 3.0 * std::numbers::pi * kViscosity * d);
+    auto& beta_r = dem.particles().rotational_drag_N_m_s();
+    std::fill(beta_r.begin(), beta_r.end(), std::numbers::pi * kViscosity * d * d * d);
+    return dem.drag_limited_step().rate_bound_1_s;
+  };
+  const double alone = bound(nullptr);
+  const double distributed = bound(&slabs);
+  std::printf("three spheres across a face: lambda %.6e 1/s alone, %.6e on slabs\n", alone, distributed);
+  EXPECT_GT(alone, 0.0);
+  EXPECT_NEAR(distributed, alone, 1e-12 * alone);
 }
 
 }  // namespace
