@@ -9,12 +9,15 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <vector>
 
 #include "common/geometry/tube.hpp"
+#include "common/io/checkpoint.hpp"
 #include "common/parallel/cartesian_decomposition.hpp"
 #include "unresolved/dem/dem_slabs.hpp"
+#include "unresolved/dem/dem_checkpoint.hpp"
 #include "unresolved/dem/dem_system.hpp"
 #include "unresolved/dem/drag_limited_step.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
@@ -65,43 +68,44 @@ struct RunStats {
   DragLimitedStep step_bound;   // at the end
 };
 
-std::map<std::int64_t, Final> run(DemSlabs* slabs, RunStats* stats = nullptr) {
+DemSettings settings() {
   const ParticleParams p = params();
-  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, kLength}, .radius_m = kRadius});
-  const InsertionResult placed = insert_at_volume_fraction(tube, domain(), {.volume_fraction = 0.3, .radius_m = p.radius_m(), .seed = 7});
-  DemSystem dem({.params = p, .domain = domain(), .time_step_s = 0.05 * rayleigh_time_s(p)}, &tube, slabs);
+  return {.params = p, .domain = domain(), .time_step_s = 0.05 * rayleigh_time_s(p)};
+}
+
+const hs::common::Tube& tube() {
+  static const hs::common::Tube t({.start_m = {0, 0, 0}, .end_m = {0, 0, kLength}, .radius_m = kRadius});
+  return t;
+}
+
+/// Stokes drag and rotational drag of a sphere on every owned particle, dragged towards the profile.
+void set_drag(DemSystem& dem) {
+  const double d = params().diameter_m;
+  auto& drag = dem.particles().drag_coefficient_N_s_m();
+  std::fill(drag.begin(), drag.end(), 3.0 * std::numbers::pi * kViscosity * d);
+  auto& rotational_drag = dem.particles().rotational_drag_N_m_s();
+  std::fill(rotational_drag.begin(), rotational_drag.end(), std::numbers::pi * kViscosity * d * d * d);
+  dem.set_force_hook(drag_towards_poiseuille);
+}
+
+/// The tube's spheres at Ht 0.3 (the same on every rank): every one (slabs null) or those in this rank's slab.
+void place(DemSystem& dem, const DemSlabs* slabs) {
+  const InsertionResult placed =
+      insert_at_volume_fraction(tube(), domain(), {.volume_fraction = 0.3, .radius_m = params().radius_m(), .seed = 7});
   for (std::size_t k = 0; k < placed.positions_m.size(); ++k) {
     const Vec3& x = placed.positions_m[k];
     if (slabs == nullptr || (x.z >= slabs->lo_m() && x.z < slabs->hi_m())) {
       (void)dem.add_particle(x, {}, static_cast<std::int64_t>(k));
     }
   }
-  // Stokes drag and rotational drag of a sphere.
-  const double beta = 3.0 * std::numbers::pi * kViscosity * p.diameter_m;
-  auto& drag = dem.particles().drag_coefficient_N_s_m();
-  std::fill(drag.begin(), drag.end(), beta);
-  auto& rotational_drag = dem.particles().rotational_drag_N_m_s();
-  std::fill(rotational_drag.begin(), rotational_drag.end(), std::numbers::pi * kViscosity * std::pow(p.diameter_m, 3));
-  dem.set_force_hook(drag_towards_poiseuille);
-  const std::vector<std::int64_t> at_start(dem.particles().id().begin(),
-                                           dem.particles().id().begin() + static_cast<std::ptrdiff_t>(dem.particles().n_owned()));
-  for (int s = 0; s < kSteps; ++s) dem.step();
-  if (stats != nullptr) {
-    stats->list_builds = static_cast<long>(dem.stats().list_builds);
-    stats->step_bound = dem.drag_limited_step();
-    long mine = 0;
-    for (std::size_t i = 0; i < dem.particles().n_owned(); ++i) {
-      mine += std::find(at_start.begin(), at_start.end(), dem.particles().id()[i]) == at_start.end() ? 1 : 0;
-    }
-    stats->arrivals = mine;
-    if (slabs != nullptr) MPI_Allreduce(&mine, &stats->arrivals, 1, MPI_LONG, MPI_SUM, slabs->comm());
-  }
+  set_drag(dem);
+}
 
-  // Every rank's particles on every rank.
+/// Every rank's particles, on every rank, by id.
+std::map<std::int64_t, Final> gathered(const DemSystem& dem, const DemSlabs* slabs) {
   const ParticleStore& ps = dem.particles();
+  const int rank = slabs != nullptr ? slabs->rank() : 0;
   std::vector<double> mine;
-  int rank = 0;
-  if (slabs != nullptr) rank = slabs->rank();
   for (std::size_t i = 0; i < ps.n_owned(); ++i) {
     mine.insert(mine.end(), {static_cast<double>(ps.id()[i]), ps.position_m()[0][i], ps.position_m()[1][i],
                              ps.position_m()[2][i], ps.velocity_m_s()[0][i], ps.velocity_m_s()[1][i],
@@ -126,6 +130,38 @@ std::map<std::int64_t, Final> run(DemSlabs* slabs, RunStats* stats = nullptr) {
     out[id] = {{all[at + 1], all[at + 2], all[at + 3]}, {all[at + 4], all[at + 5], all[at + 6]}, static_cast<int>(all[at + 7])};
   }
   return out;
+}
+
+/// Largest distance between the same particle in two runs (up to the periodic wrap), in diameters.
+double largest_distance(const std::map<std::int64_t, Final>& a, const std::map<std::int64_t, Final>& b) {
+  double worst = 0.0;
+  for (const auto& [id, pa] : a) {
+    const auto it = b.find(id);
+    if (it == b.end()) return std::numeric_limits<double>::infinity();
+    Vec3 dx = it->second.x - pa.x;
+    dx.z -= kLength * std::round(dx.z / kLength);
+    worst = std::max(worst, norm(dx) / params().diameter_m);
+  }
+  return worst;
+}
+
+std::map<std::int64_t, Final> run(DemSlabs* slabs, RunStats* stats = nullptr) {
+  DemSystem dem(settings(), &tube(), slabs);
+  place(dem, slabs);
+  const std::vector<std::int64_t> at_start(dem.particles().id().begin(),
+                                           dem.particles().id().begin() + static_cast<std::ptrdiff_t>(dem.particles().n_owned()));
+  for (int s = 0; s < kSteps; ++s) dem.step();
+  if (stats != nullptr) {
+    stats->list_builds = static_cast<long>(dem.stats().list_builds);
+    stats->step_bound = dem.drag_limited_step();
+    long mine = 0;
+    for (std::size_t i = 0; i < dem.particles().n_owned(); ++i) {
+      mine += std::find(at_start.begin(), at_start.end(), dem.particles().id()[i]) == at_start.end() ? 1 : 0;
+    }
+    stats->arrivals = mine;
+    if (slabs != nullptr) MPI_Allreduce(&mine, &stats->arrivals, 1, MPI_LONG, MPI_SUM, slabs->comm());
+  }
+  return gathered(dem, slabs);
 }
 
 TEST(DemOnSlabs, FollowsOneRankHoldingEveryParticle) {
@@ -175,6 +211,38 @@ TEST(DemOnSlabs, FollowsOneRankHoldingEveryParticle) {
   if (size > 1) {
     EXPECT_GT(arrivals, 0) << "no particle crossed a slab face: the test would not test migration";
   }
+}
+
+// Each rank saves its slab's particles and the springs of the pairs it computes (its own checkpoint file in a
+// case); a run restored from them goes on as the uninterrupted one. Band as DemCheckpoint's on one rank: the restart
+// re-sorts the particles, so only the order of summing forces changes.
+TEST(DemOnSlabs, ARunRestoredFromEachRanksStateFollowsTheUninterruptedOne) {
+  const hs::common::CartesianDecomposition decomposition(
+      {.global_nodes = {12, 12, kPlanes}, .periodic = {false, false, true}, .ranks_per_axis = {1, 1, 0}, .ghost = 1},
+      MPI_COMM_WORLD);
+  DemSlabs slabs(decomposition, domain(), kLength / kPlanes);
+  constexpr int kHalf = 300;
+  DemSystem straight(settings(), &tube(), &slabs);
+  place(straight, &slabs);
+  for (int s = 0; s < 2 * kHalf; ++s) straight.step();
+
+  DemSystem first(settings(), &tube(), &slabs);
+  place(first, &slabs);
+  for (int s = 0; s < kHalf; ++s) first.step();
+  hs::common::Checkpoint state;
+  write_dem_state(first, state, "dem.");
+  long springs = static_cast<long>(first.contact_history().keys.size());
+  MPI_Allreduce(MPI_IN_PLACE, &springs, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+  DemSystem resumed(settings(), &tube(), &slabs);
+  read_dem_state(resumed, state, "dem.");
+  set_drag(resumed);
+  for (int s = 0; s < kHalf; ++s) resumed.step();
+
+  const double worst = largest_distance(gathered(straight, &slabs), gathered(resumed, &slabs));
+  std::printf("restored on slabs after %d steps (%ld springs saved): max |x - x_uninterrupted| = %.2e d\n", kHalf,
+              springs, worst);
+  EXPECT_GT(springs, 20) << "no springs saved: the restart would not test them";
+  EXPECT_LE(worst, 1e-9);
 }
 
 // Three overlapping spheres in a row along the axis, the first below the slab face at z = 40 um (a face at np 2
