@@ -31,20 +31,29 @@ void ParticleStore::resize(std::size_t n) {
   inlet_opening_.resize(n, no_inlet_opening);
 }
 
+namespace {
+
+/// Writes a ParticleState into row i (kinematics, size, mass, id, inlet opening).
+void write_state(ParticleStore& store, std::size_t i, const ParticleState& p) {
+  for (int a = 0; a < 3; ++a) {
+    store.position_m()[a][i] = p.position_m[a];
+    store.velocity_m_s()[a][i] = p.velocity_m_s[a];
+    store.angular_velocity_rad_s()[a][i] = p.angular_velocity_rad_s[a];
+  }
+  store.radius_m()[i] = p.radius_m;
+  store.mass_kg()[i] = p.mass_kg;
+  store.id()[i] = p.id;
+  store.inlet_opening()[i] = p.inlet_opening;
+}
+
+}  // namespace
+
 std::size_t ParticleStore::add(const ParticleState& p) {
   clear_ghosts();
   const std::size_t i = n_owned_;
   resize(i + 1);
   ++n_owned_;
-  for (int a = 0; a < 3; ++a) {
-    pos_[a][i] = p.position_m[a];
-    vel_[a][i] = p.velocity_m_s[a];
-    omega_[a][i] = p.angular_velocity_rad_s[a];
-  }
-  radius_[i] = p.radius_m;
-  mass_[i] = p.mass_kg;
-  id_[i] = p.id;
-  inlet_opening_[i] = p.inlet_opening;
+  write_state(*this, i, p);
   return i;
 }
 
@@ -115,15 +124,7 @@ std::size_t ParticleStore::add_remote_ghost(const ParticleState& p, const GhostC
   resize(g + 1);
   ghost_owner_.push_back(remote_owner);
   ghost_shift_.push_back({});
-  for (int a = 0; a < 3; ++a) {
-    pos_[a][g] = p.position_m[a];
-    vel_[a][g] = p.velocity_m_s[a];
-    omega_[a][g] = p.angular_velocity_rad_s[a];
-  }
-  radius_[g] = p.radius_m;
-  mass_[g] = p.mass_kg;
-  id_[g] = p.id;
-  inlet_opening_[g] = p.inlet_opening;
+  write_state(*this, g, p);
   drag_beta_[g] = coupling.drag_N_s_m;
   rot_drag_[g] = coupling.rotational_drag_N_m_s;
   for (int a = 0; a < 3; ++a) {
