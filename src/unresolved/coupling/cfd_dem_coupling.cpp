@@ -238,8 +238,7 @@ void CfdDemCoupling::particle_forces() {
   }
   if (bad < n) throw hs::common::NumericalError(bad_message);
   if (closures_.lift) {   // the fluid gets minus the lift, spread over the sphere's markers
-    map_.for_each_cell([&](std::size_t c, std::size_t k) {
-      const std::size_t i = k / kMarkersPerSphere;
+    map_.for_each_cell([&](std::size_t c, std::size_t i) {
       lift_reaction_N_[c] -= Vec3{lift_col[0][i], lift_col[1][i], lift_col[2][i]} / kMarkersPerSphere;
     });
   }
@@ -293,8 +292,7 @@ void CfdDemCoupling::fill_fields() {
   us.fill(Vec3{});
   constexpr double w = 1.0 / kMarkersPerSphere;
   const ParticleStore& cp = p;
-  map_.for_each_cell([&](std::size_t c, std::size_t k) {
-    const std::size_t i = k / kMarkersPerSphere;
+  map_.for_each_cell([&](std::size_t c, std::size_t i) {
     weight[c] += w;
     us[c] += w * particle_velocity(cp, i);
     ksl[c] += w * cp.drag_coefficient_N_s_m()[i] / map_.fluid_volume_m3(c);
@@ -303,9 +301,8 @@ void CfdDemCoupling::fill_fields() {
     // Ksl and the momentum density Ksl Us are what the implicit drag puts on the grid: smooth both (conserved), and
     // Us becomes their ratio, so Ksl (Us - u) keeps its total.
     BlockField<Vec3> momentum(fluid_.grid().cells(), Vec3{});
-    map_.for_each_cell([&](std::size_t c, std::size_t k) {
-      momentum[c] += w * cp.drag_coefficient_N_s_m()[k / kMarkersPerSphere] / map_.fluid_volume_m3(c) *
-                     particle_velocity(cp, k / kMarkersPerSphere);
+    map_.for_each_cell([&](std::size_t c, std::size_t i) {
+      momentum[c] += w * cp.drag_coefficient_N_s_m()[i] / map_.fluid_volume_m3(c) * particle_velocity(cp, i);
     });
     smoothing_->smooth_together({&ksl}, {&momentum});   // one solve for the four columns
     for (std::size_t c = 0; c < ksl.data().size(); ++c) us[c] = ksl[c] > 0.0 ? momentum[c] / ksl[c] : Vec3{};
@@ -333,8 +330,7 @@ void CfdDemCoupling::exchange_drag() {
   // Each cell adds its markers' impulses first, then the share of the imbalance of earlier steps given back through
   // the particles' cells: the order of the serial loops this replaces.
   const Vec3 share = map_.size() > 0 ? stats_.pending_N_s / static_cast<double>(map_.size() * kMarkersPerSphere) : Vec3{};
-  map_.for_each_cell([&](std::size_t c, std::size_t k) {
-    const std::size_t i = k / kMarkersPerSphere;
+  map_.for_each_cell([&](std::size_t c, std::size_t i) {
     f[c] -= Vec3{imp[0][i], imp[1][i], imp[2][i]} / (kMarkersPerSphere * map_.fluid_volume_m3(c) * dt);
   });
   if (map_.size() > 0) {

@@ -53,50 +53,140 @@ const std::array<Vec3, kMarkersPerSphere>& divided_markers() {
   return markers;
 }
 
-DividedMap::DividedMap(const FvmGrid& grid) : grid_(grid), cell_volume_m3_(std::pow(grid.dx_m(), 3)) {}
+DividedMap::DividedMap(const FvmGrid& grid)
+    : grid_(grid), cell_volume_m3_(std::pow(grid.dx_m(), 3)), slabs_(grid.slabs() != nullptr) {}
 
-void DividedMap::locate(const ParticleStore& particles) {
-  const std::size_t n = particles.n_owned();
-  cells_.assign(n * kMarkersPerSphere, 0);
-  const auto& pos = particles.position_m();
-  const auto& markers = divided_markers();
-  const BlockField<double>& ff = grid_.fluid_fractions();
-  bool lost = false;
-#pragma omp parallel for schedule(static) reduction(|| : lost) if (n > 4096)
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x{pos[0][i], pos[1][i], pos[2][i]};
-    const auto centre = grid_.cell_of(x);
-    if (!centre) {
-      lost = true;   // thrown below: an exception must not leave an OpenMP region
+std::optional<std::array<long, 3>> DividedMap::global_cell(const Vec3& x_m) const {
+  const hs::common::Box3& box = grid_.box_m();
+  const auto& n = grid_.global_cells();
+  const Vec3 w = grid_.wrap(x_m);   // along the periodic axes
+  std::array<long, 3> g{};
+  for (int a = 0; a < 3; ++a) {
+    const auto na = static_cast<long>(n[static_cast<std::size_t>(a)]);
+    if (slabs_ && a == 2 && grid_.periodic(2)) {   // not wrapped: the image beyond the seam is another row's
+      g[2] = static_cast<long>(std::floor((x_m[2] - box.lo[2]) / grid_.dx_m()));
       continue;
     }
-    const std::size_t c0 = ff.index((*centre)[0], (*centre)[1], (*centre)[2]);
+    const double s = (w[a] - box.lo[a]) / grid_.dx_m();
+    if (!(s >= 0.0) || s > static_cast<double>(na)) return std::nullopt;
+    g[static_cast<std::size_t>(a)] = std::min(static_cast<long>(s), na - 1);
+  }
+  return g;
+}
+
+std::size_t DividedMap::local_index(const std::array<long, 3>& g) const {
+  const long k = g[2] - grid_.first_plane();
+  if (k < 0 || k >= grid_.cells()[2]) return kElsewhere;
+  return grid_.fluid_fractions().index(static_cast<int>(g[0]), static_cast<int>(g[1]), static_cast<int>(k));
+}
+
+bool DividedMap::has_fluid(const std::array<long, 3>& g) const {
+  const std::size_t here = local_index(g);
+  if (here != kElsewhere) return grid_.fluid_fractions()[here] > 0.0;
+  const long below = grid_.first_plane() - 1 - g[2];
+  const long above = g[2] - grid_.first_plane() - grid_.cells()[2];
+  const long d = below >= 0 ? below : above;
+  if (d >= cached_planes_) {
+    throw hs::common::NumericalError("coupling: a marker reached beyond the planes cached next to this block");
+  }
+  const auto plane = static_cast<std::size_t>(grid_.cells()[0]) * static_cast<std::size_t>(grid_.cells()[1]);
+  const std::size_t at = static_cast<std::size_t>(d) * plane + static_cast<std::size_t>(g[1]) * static_cast<std::size_t>(grid_.cells()[0]) +
+                         static_cast<std::size_t>(g[0]);
+  return (below >= 0 ? fluid_below_ : fluid_above_)[at] != 0;
+}
+
+void DividedMap::cache_neighbour_fluid(int planes) {
+  const auto& n = grid_.cells();
+  const long n_global = grid_.global_cells()[2];
+  fluid_below_.clear();
+  fluid_above_.clear();
+  for (int d = 0; d < planes; ++d) {
+    for (const int side : {0, 1}) {
+      long k = side == 0 ? grid_.first_plane() - 1 - d : grid_.first_plane() + n[2] + d;
+      if (grid_.periodic(2)) k = ((k % n_global) + n_global) % n_global;
+      const bool inside = k >= 0 && k < n_global;   // else outside the box: global_cell() never gives it
+      std::vector<std::uint8_t>& out = side == 0 ? fluid_below_ : fluid_above_;
+      for (int j = 0; j < n[1]; ++j) {
+        for (int i = 0; i < n[0]; ++i) {
+          out.push_back(inside && grid_.fluid_fraction_of_cell(i, j, static_cast<int>(k)) > 0.0 ? 1 : 0);
+        }
+      }
+    }
+  }
+  cached_planes_ = planes;
+}
+
+std::size_t DividedMap::marker_cell(const Vec3& x, const std::array<long, 3>& centre) const {
+  const auto g = global_cell(x);
+  if (!g) return local_index(centre);
+  const std::size_t here = local_index(*g);
+  const std::size_t centre_here = local_index(centre);
+  if (here == kElsewhere && centre_here == kElsewhere) return kElsewhere;   // a neighbour's either way
+  return has_fluid(*g) ? here : centre_here;
+}
+
+void DividedMap::locate(const ParticleStore& particles) {
+  n_owned_ = particles.n_owned();
+  // The rows this block deposits, by id: its particles and, on slabs, the neighbours' (a local periodic image is not
+  // one: the markers of the particle it copies wrap along x and y by themselves).
+  by_id_.clear();
+  double largest_radius = 0.0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (i >= n_owned_ && !(slabs_ && particles.coupling_row(i) == i)) continue;
+    by_id_.push_back(static_cast<std::uint32_t>(i));
+    largest_radius = std::max(largest_radius, particles.radius_m()[i]);
+  }
+  const auto& id = particles.id();
+  std::sort(by_id_.begin(), by_id_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return id[a] != id[b] ? id[a] < id[b] : a < b;   // one id twice: its images on both sides of one neighbour
+  });
+  if (slabs_) {   // the neighbours' cells a marker of a sphere centred in this block can reach (0.9 r), and one more
+    const int planes = static_cast<int>(std::ceil(largest_radius / grid_.dx_m())) + 1;
+    if (planes > cached_planes_) cache_neighbour_fluid(planes);
+  }
+  cells_.assign(particles.size() * kMarkersPerSphere, kElsewhere);
+  const auto& pos = particles.position_m();
+  const auto& markers = divided_markers();
+  const auto n = static_cast<std::int64_t>(by_id_.size());
+  bool lost = false;
+#pragma omp parallel for schedule(static) reduction(|| : lost) if (n > 4096)
+  for (std::int64_t q = 0; q < n; ++q) {
+    const std::size_t i = by_id_[static_cast<std::size_t>(q)];
+    const Vec3 x{pos[0][i], pos[1][i], pos[2][i]};
+    const auto centre = global_cell(x);
+    if (!centre) {
+      lost = lost || i < n_owned_;   // thrown below: an exception must not leave an OpenMP region
+      continue;
+    }
     for (int m = 0; m < kMarkersPerSphere; ++m) {
-      const auto at = grid_.cell_of(x + particles.radius_m()[i] * markers[static_cast<std::size_t>(m)]);
-      std::size_t c = c0;
-      if (at && ff((*at)[0], (*at)[1], (*at)[2]) > 0.0) c = ff.index((*at)[0], (*at)[1], (*at)[2]);
-      cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)] = c;
+      cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)] =
+          marker_cell(x + particles.radius_m()[i] * markers[static_cast<std::size_t>(m)], *centre);
     }
   }
   if (lost) throw hs::common::NumericalError("coupling: a particle centre left the fluid grid");
-  sort_by_cell(ff.data().size());
+  sort_by_cell(grid_.fluid_fractions().data().size());
 }
 
 void DividedMap::sort_by_cell(std::size_t n_cells) {
-  // Counting sort, stable in the marker index: each thread counts a contiguous range of markers; a cell's markers
-  // from thread 0 come first, then thread 1's, ..., so the order is ascending k at any thread count.
-  const std::size_t n_markers = cells_.size();
+  // Counting sort, stable in the marker's place k in id order (particle by_id_[k / 29], marker k % 29): each thread
+  // counts a contiguous range of k; a cell's markers from thread 0 come first, then thread 1's, ..., so the order is
+  // ascending k at any thread count. Markers left to a neighbour are skipped.
+  const std::size_t n_markers = by_id_.size() * kMarkersPerSphere;
+  const auto cell_of_marker = [&](std::size_t k) {
+    return cells_[by_id_[k / kMarkersPerSphere] * std::size_t{kMarkersPerSphere} + k % kMarkersPerSphere];
+  };
   const int n_threads = n_markers > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
   std::vector<std::vector<std::uint32_t>> count(static_cast<std::size_t>(n_threads));
   start_.assign(n_cells + 1, 0);
-  markers_.resize(n_markers);
 #pragma omp parallel num_threads(n_threads)
   {
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const std::size_t lo = n_markers * t / count.size(), hi = n_markers * (t + 1) / count.size();
     std::vector<std::uint32_t>& mine = count[t];
     mine.assign(n_cells, 0);
-    for (std::size_t k = lo; k < hi; ++k) ++mine[cells_[k]];
+    for (std::size_t k = lo; k < hi; ++k) {
+      if (const std::size_t c = cell_of_marker(k); c != kElsewhere) ++mine[c];
+    }
 #pragma omp barrier
 #pragma omp single
     {
@@ -110,8 +200,11 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
         }
       }
       start_[n_cells] = total;
+      rows_.resize(total);
     }
-    for (std::size_t k = lo; k < hi; ++k) markers_[mine[cells_[k]]++] = static_cast<std::uint32_t>(k);
+    for (std::size_t k = lo; k < hi; ++k) {
+      if (const std::size_t c = cell_of_marker(k); c != kElsewhere) rows_[mine[c]++] = by_id_[k / kMarkersPerSphere];
+    }
   }
   occupied_.clear();
   for (std::size_t c = 0; c < n_cells; ++c) {
@@ -122,8 +215,8 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
 double DividedMap::void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps,
                                  DiffusionSmoothing* smoothing) const {
   BlockField<double> solid(grid_.cells(), 0.0);
-  for_each_cell([&](std::size_t c, std::size_t k) {
-    const double r = particles.radius_m()[k / kMarkersPerSphere];
+  for_each_cell([&](std::size_t c, std::size_t i) {
+    const double r = particles.radius_m()[i];
     solid[c] += 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
   });
   // Every stored cell (ghosts too: the solver refills them before use); the clip below walks the interior.

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -23,32 +24,43 @@ inline constexpr int kMarkersPerSphere = 29;
 /// its volume-centroid radius: 8 diagonal directions and the 6 axis directions.
 [[nodiscard]] const std::array<hs::common::Vec3, kMarkersPerSphere>& divided_markers();
 
-/// Where each owned particle's 29 markers fell: cell flat indices (BlockField::index) of the FvmGrid cells.
+/// Where each particle's 29 markers fell: cell flat indices (BlockField::index) of the FvmGrid cells.
 /// Every particle-to-grid sum (void fraction, Us, Ksl, forces) uses these same weights (1/29 each), so that
 /// what the particles give the fluid and what the fluid gives the particles balance exactly.
+///
+/// On z-slabs (the grid's slabs(), docs/cfd-dem.md "Distributed CFD-DEM" step 4) a block deposits every marker that
+/// falls in one of its own cells, of its owned particles and of the neighbours' (remote ghosts, DemSlabs), and each
+/// cell adds its markers in ascending (particle id, marker): the order of one rank holding every particle, so the
+/// block's sums are that rank's, sliced, to the bit, without a reverse exchange. A marker in a neighbour's cell is
+/// left to the neighbour, where the particle is a ghost (the ghost layer is a cut-off, wider than a sphere).
 class DividedMap {
  public:
   explicit DividedMap(const FvmGrid& grid);
 
-  /// Locates the markers of the owned particles (threaded over particles), and sorts them by cell for
-  /// for_each_cell(). Markers outside the box along a non-periodic axis, or in a cell with no fluid, are lumped onto
-  /// the centre's cell (as CFDEM does with markers it cannot find).
+  /// Locates the markers of the owned particles and, on slabs, of the remote ghosts (threaded over particles), and
+  /// sorts them by cell for for_each_cell(). A marker outside the box along a non-periodic axis, or in a cell with no
+  /// fluid, is lumped onto the centre's cell (as CFDEM does with markers it cannot find). On slabs z is not wrapped:
+  /// a marker beyond the seam belongs to the periodic image of its particle, which a neighbour (or, on one slab,
+  /// this block) holds as a remote ghost.
   void locate(const ParticleStore& particles);
-  [[nodiscard]] std::size_t size() const { return cells_.size() / kMarkersPerSphere; }
-  /// Cell flat index of marker m of particle i.
+  /// Owned particles located (the first size() rows of the store).
+  [[nodiscard]] std::size_t size() const { return n_owned_; }
+  /// A marker that falls in another block's cell (cell() on slabs only).
+  static constexpr std::size_t kElsewhere = static_cast<std::size_t>(-1);
+  /// Cell flat index of marker m of the store's row i (owned, or on slabs a remote ghost), or kElsewhere.
   [[nodiscard]] std::size_t cell(std::size_t i, int m) const { return cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)]; }
 
   /// Particle-to-grid sums without races and with the bits of a serial loop: threaded over the cells that hold
-  /// markers, f(cell, marker) is called for each marker k = i * kMarkersPerSphere + m of the cell (particle
-  /// k / kMarkersPerSphere) in ascending k, the order in which a loop over particles and their markers would
-  /// add them. So every sum comes out the same at any thread count, run to run.
+  /// markers, f(cell, row) is called for each marker in the cell (row: the store's row of its particle) in
+  /// ascending (id, marker), the order of a loop over the particles by id and their markers. So every sum comes out
+  /// the same at any thread count, run to run, and (on slabs) at any rank count.
   template <typename F>
   void for_each_cell(F&& f) const {
     const auto n = static_cast<std::int64_t>(occupied_.size());
 #pragma omp parallel for schedule(static) if (n > kParallelCells)
     for (std::int64_t q = 0; q < n; ++q) {
       const std::size_t c = occupied_[static_cast<std::size_t>(q)];
-      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e) f(c, static_cast<std::size_t>(markers_[e]));
+      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e) f(c, static_cast<std::size_t>(rows_[e]));
     }
   }
 
@@ -64,6 +76,17 @@ class DividedMap {
  private:
   /// Clips eps at eps_min in the fluid cells (1 in the others); returns the solid volume dropped, m^3.
   double clip_void_fraction(double eps_min, BlockField<double>& eps) const;
+  /// Where a marker at x of a particle whose centre's cell is `centre` (global index) is added: a flat index or
+  /// kElsewhere.
+  [[nodiscard]] std::size_t marker_cell(const hs::common::Vec3& x, const std::array<long, 3>& centre) const;
+  /// The global cell of x: periodic x and y wrapped, z wrapped only without slabs; nothing outside the box.
+  [[nodiscard]] std::optional<std::array<long, 3>> global_cell(const hs::common::Vec3& x) const;
+  /// Whether the global cell g has fluid: this block's fluid fraction, or beyond its planes the cached one.
+  [[nodiscard]] bool has_fluid(const std::array<long, 3>& g) const;
+  /// The flat index of global cell g if it is one of this block's, else kElsewhere.
+  [[nodiscard]] std::size_t local_index(const std::array<long, 3>& g) const;
+  /// Caches which cells have fluid in the `planes` planes on either side of this block (slabs only).
+  void cache_neighbour_fluid(int planes);
   void sort_by_cell(std::size_t n_cells);
 
   // Below this many occupied cells the sums run on one thread (an OpenMP region costs more than the loop).
@@ -71,11 +94,18 @@ class DividedMap {
 
   const FvmGrid& grid_;
   double cell_volume_m3_;
-  std::vector<std::size_t> cells_;
-  // The markers sorted by cell (a stable counting sort): those of cell c are markers_[start_[c] .. start_[c + 1]).
+  bool slabs_ = false;
+  std::size_t n_owned_ = 0;
+  std::vector<std::size_t> cells_;       // per store row and marker; kElsewhere where not here (or not located)
+  std::vector<std::uint32_t> by_id_;     // the rows located, by ascending id
+  // The markers sorted by cell (a stable counting sort in by_id_ order): the rows of cell c's markers are
+  // rows_[start_[c] .. start_[c + 1]).
   std::vector<std::uint32_t> start_;
-  std::vector<std::uint32_t> markers_;
+  std::vector<std::uint32_t> rows_;
   std::vector<std::size_t> occupied_;   // cells holding a marker, ascending
+  // Slabs: fluid flags of the cached planes below (plane first - 1 - d at d) and above (first + n + d), x fastest.
+  int cached_planes_ = 0;
+  std::vector<std::uint8_t> fluid_below_, fluid_above_;
 };
 
 }  // namespace hs::unresolved

@@ -223,26 +223,26 @@ void FvmGrid::compute_apertures(int c) {
   fill_ghosts(area);
 }
 
+double FvmGrid::fluid_fraction_of_cell(int i, int j, int k_global) const {
+  const double h = dx_m_;
+  const Vec3& o = spec_.box_m.lo;   // the centre from the box corner and the global index, as cell_centre_m()
+  const Vec3 p{o.x + (i + 0.5) * h, o.y + (j + 0.5) * h, o.z + (k_global + 0.5) * h};
+  const double sd = shape_.signed_distance(p);
+  if (std::abs(sd) > 0.87 * h) return sd < 0.0 ? 1.0 : 0.0;   // beyond the half-diagonal (0.866 h): one side
+  int inside = 0;
+  for (int q = 0; q < kCellSamples * kCellSamples * kCellSamples; ++q) {
+    const Vec3 off{(q % kCellSamples + 0.5) / kCellSamples - 0.5, ((q / kCellSamples) % kCellSamples + 0.5) / kCellSamples - 0.5,
+                   (q / (kCellSamples * kCellSamples) + 0.5) / kCellSamples - 0.5};
+    if (shape_.signed_distance(p + h * off) < 0.0) ++inside;
+  }
+  return static_cast<double>(inside) / (kCellSamples * kCellSamples * kCellSamples);
+}
+
 void FvmGrid::compute_fluid_fractions() {
   fluid_fraction_ = BlockField<double>(n_, 0.0);
-  const double h = dx_m_;
   for (int k = 0; k < n_[2]; ++k) {
     for (int j = 0; j < n_[1]; ++j) {
-      for (int i = 0; i < n_[0]; ++i) {
-        const Vec3 p = cell_centre_m(i, j, k);
-        const double sd = shape_.signed_distance(p);
-        if (std::abs(sd) > 0.87 * h) {   // beyond the half-diagonal (0.866 h): whole cell on one side
-          fluid_fraction_(i, j, k) = sd < 0.0 ? 1.0 : 0.0;
-          continue;
-        }
-        int inside = 0;
-        for (int q = 0; q < kCellSamples * kCellSamples * kCellSamples; ++q) {
-          const Vec3 off{(q % kCellSamples + 0.5) / kCellSamples - 0.5, ((q / kCellSamples) % kCellSamples + 0.5) / kCellSamples - 0.5,
-                         (q / (kCellSamples * kCellSamples) + 0.5) / kCellSamples - 0.5};
-          if (shape_.signed_distance(p + h * off) < 0.0) ++inside;
-        }
-        fluid_fraction_(i, j, k) = static_cast<double>(inside) / (kCellSamples * kCellSamples * kCellSamples);
-      }
+      for (int i = 0; i < n_[0]; ++i) fluid_fraction_(i, j, k) = fluid_fraction_of_cell(i, j, k + first_plane_);
     }
   }
   fill_ghosts(fluid_fraction_);

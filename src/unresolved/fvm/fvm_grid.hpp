@@ -127,6 +127,9 @@ class FvmGrid {
   [[nodiscard]] const BlockField<double>& open_areas(int c) const { return area_[static_cast<std::size_t>(c)]; }
   /// Fluid volume fraction of each cell (geometry only: 1 inside, 0 in the wall, in between when cut).
   [[nodiscard]] const BlockField<double>& fluid_fractions() const { return fluid_fraction_; }
+  /// The fluid fraction of any cell of the whole grid by its global index (along z: k + first_plane()), from the shape:
+  /// what fluid_fractions() holds for this block's cells, to the bit; for cells of the neighbouring blocks.
+  [[nodiscard]] double fluid_fraction_of_cell(int i, int j, int k_global) const;
   /// The link of an active node towards direction dir = 2 a + (0: -a, 1: +a) when that neighbour is not active.
   [[nodiscard]] NodeLink link(int c, std::array<int, 3> node, int dir) const;
 
