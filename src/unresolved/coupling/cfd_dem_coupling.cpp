@@ -6,9 +6,12 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include "common/dimensionless_groups.hpp"
 #include "common/errors.hpp"
@@ -33,9 +36,19 @@ Vec3 particle_velocity(const ParticleStore& p, std::size_t i) {
 }  // namespace
 
 CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSettings settings, CouplingClosures closures)
-    : fluid_(fluid), dem_(dem), settings_(settings), closures_(std::move(closures)), map_(fluid.grid()),
-      eps_old_(fluid.grid().cells(), 1.0), lift_reaction_N_(fluid.grid().cells(), Vec3{}) {
+    : fluid_(fluid), dem_(dem), slabs_(dem.slabs()), settings_(settings), closures_(std::move(closures)),
+      map_(fluid.grid()), eps_old_(fluid.grid().cells(), 1.0), lift_reaction_N_(fluid.grid().cells(), Vec3{}) {
   if (!closures_.drag) throw hs::common::ConfigError("coupling: a drag closure is required");
+  if ((slabs_ != nullptr) != (fluid_.grid().slabs() != nullptr)) {
+    throw std::logic_error("coupling: the fluid's grid and the DEM must both be on slabs, or neither");
+  }
+  if (slabs_ != nullptr) {
+    if (settings_.closure_frame == ClosureFrame::channel) {
+      throw hs::common::ConfigError(
+          "coupling: the channel closure frame does not run on several ranks yet (docs/cfd-dem.md, \"Distributed "
+          "CFD-DEM\" step 4): run on one rank, or use the tube frame");
+    }
+  }
   const double ratio = fluid_.settings().dt_s / dem_.time_step_s();
   if (settings_.n_coupling < 1 || std::abs(ratio - settings_.n_coupling) > 1e-9 * ratio) {
     throw hs::common::ConfigError(fmt::format("coupling: dt_CFD / dt_DEM = {:.6g} must equal n_coupling = {}",
@@ -75,8 +88,11 @@ const SelfMobility& CfdDemCoupling::self_mobility(double diameter_m) {
         "correction off (self_mobility.hpp)",
         ratio, diameter_m, fluid_.grid().dx_m()));
   }
+  // On slabs every rank measures the table on the whole grid by itself (a one-time calibration on the run's tube):
+  // the same table as one rank's, without a distributed solve.
+  if (slabs_ != nullptr && !whole_grid_) whole_grid_ = std::make_unique<FvmGrid>(fluid_.grid().shape(), fluid_.grid().spec());
   const SelfMobility& m = self_mobility_.emplace_back(
-      fluid_.grid(), fluid_.fluid(), fluid_.drive(),
+      slabs_ != nullptr ? *whole_grid_ : fluid_.grid(), fluid_.fluid(), fluid_.drive(),
       TubeFrame{.axis = settings_.axis, .axis_point_m = settings_.axis_point_m, .radius_m = settings_.tube_radius_m},
       diameter_m, settings_.void_fraction_feedback ? settings_.eps_min : 0.0, settings_.smoothing_length_m);
   if (smoothing_) {
@@ -135,21 +151,10 @@ hs::closures::ClosureInputs CfdDemCoupling::inputs(std::size_t i, const Vec3& uf
 void CfdDemCoupling::particle_forces() {
   ParticleStore& p = dem_.particles();
   const std::size_t n = p.n_owned();
-  const double rho = fluid_.fluid().density_kg_m3;
-  const double mu = rho * fluid_.fluid().kinematic_viscosity_m2_s;
-  auto& ext = p.external_force_N();
-  auto& beta = p.drag_coefficient_N_s_m();
-  auto& uf_col = p.fluid_velocity_m_s();
-  auto& di = p.deformation_index();
-  auto& beta_r = p.rotational_drag_N_m_s();
-  auto& omega_col = p.fluid_angular_velocity_rad_s();
-  auto& lift_col = p.lift_force_N();
   const bool correct = settings_.self_induced_correction && settings_.two_way;
-  const double dt = fluid_.settings().dt_s;
   lift_reaction_N_.fill(Vec3{});
   map_.locate(p);
   if (channel_) channel_->new_step();
-  const BlockField<double>& eps = fluid_.void_fraction();
   // What the threaded loop below must not do itself: the channel frame's memo and the self-mobility tables are
   // filled here, on one thread, in particle order.
   std::vector<LocalChannel> channels;
@@ -157,90 +162,169 @@ void CfdDemCoupling::particle_forces() {
     channels.reserve(n);
     for (std::size_t i = 0; i < n; ++i) channels.push_back(local_channel(particle_position(p, i)));
   }
-  if (correct) {
-    for (std::size_t i = 0; i < n; ++i) (void)self_mobility(2.0 * p.radius_m()[i]);
+  if (settings_.buoyancy_over_footprint) sum_over_footprints();
+  // The rows sampled here: the owned ones; on slabs those (owned or remote ghosts) whose centre is in this block,
+  // every other row's values zero, so that sending the ghosts' values to their owners adds each value to zeros.
+  SampledColumns out{.external_force_N = p.external_force_N(), .fluid_velocity_m_s = p.fluid_velocity_m_s(),
+                     .lift_force_N = p.lift_force_N(), .fluid_angular_velocity_rad_s = p.fluid_angular_velocity_rad_s(),
+                     .drag_coefficient_N_s_m = p.drag_coefficient_N_s_m(),
+                     .rotational_drag_N_m_s = p.rotational_drag_N_m_s(), .deformation_index = p.deformation_index()};
+  std::vector<ParticleStore::Column*> columns;   // all of them, for the exchange
+  for (auto* v : {&out.external_force_N, &out.fluid_velocity_m_s, &out.lift_force_N, &out.fluid_angular_velocity_rad_s}) {
+    for (ParticleStore::Column& column : *v) columns.push_back(&column);
   }
-  if (settings_.buoyancy_over_footprint) fill_buoyancy_density();
-  // A bad drag coefficient is reported for the first particle that had one, after the loop (an exception must not
-  // leave an OpenMP region).
-  std::size_t bad = n;
+  columns.insert(columns.end(), {&out.drag_coefficient_N_s_m, &out.rotational_drag_N_m_s, &out.deformation_index});
+  std::vector<std::size_t> rows;
+  if (slabs_ == nullptr) {
+    rows.resize(n);
+    std::iota(rows.begin(), rows.end(), std::size_t{0});
+  } else {
+    for (ParticleStore::Column* column : columns) std::fill(column->begin(), column->end(), 0.0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (map_.centred_here(i)) rows.push_back(i);
+    }
+  }
+  if (correct) {   // the tables, measured on first use, on one thread; a refusal stops every rank
+    std::string refused;
+    try {
+      for (const std::size_t i : rows) (void)self_mobility(2.0 * p.radius_m()[i]);
+    } catch (const hs::common::ConfigError& e) {
+      refused = e.what();
+    }
+    if (slabs_ != nullptr ? slabs_->any(!refused.empty()) : !refused.empty()) {
+      throw hs::common::ConfigError(refused.empty() ? "coupling: another rank refused the self-induced velocity correction" : refused);
+    }
+  }
+  // A bad drag coefficient is reported for the first row that had one, after the loop (an exception must not leave
+  // an OpenMP region), on every rank (a rank left behind would wait in the next exchange).
+  const auto n_rows = static_cast<std::int64_t>(rows.size());
+  std::int64_t bad = n_rows;
   std::string bad_message;
-#pragma omp parallel for schedule(static) if (static_cast<std::int64_t>(n) > kParallelParticles)
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x = particle_position(p, i);
-    const double d = 2.0 * p.radius_m()[i];
-    Vec3 uf = fluid_.velocity_at(x);
-    if (correct) {
-      // What this sphere gave the fluid in the step just made: minus its drag impulse per time, minus its lift.
-      const Vec3 j{p.drag_impulse_N_s()[0][i], p.drag_impulse_N_s()[1][i], p.drag_impulse_N_s()[2][i]};
-      const Vec3 lift_before{lift_col[0][i], lift_col[1][i], lift_col[2][i]};
-      // M is measured in plasma; a suspension viscosity mu_plasma f(eps) at the sphere scales it by 1 / f (a Stokes
-      // flow's response is inversely proportional to the viscosity, and the smoothed force sits within ~l of the
-      // sphere, where f is the local one: an approximation where f varies over l, e.g. at the cell-free layer).
-      const double factor = settings_.suspension_viscosity != SuspensionViscosity::none
-                                ? fluid_.viscosity_factor()[map_.cell(i, 0)] : 1.0;
-      uf = uf - (1.0 / factor) * self_mobility(d).induced_velocity(x, -1.0 * (j / dt + lift_before));
-    }
-    const auto grad = fluid_.velocity_gradient_at(x);
-    if (settings_.fluid_torque) {
-      // Omega_f = curl(u) / 2 with grad[a][b] = du_a / dx_b; beta_r = pi mu d^3 (a sphere in Stokes flow).
-      omega_col[0][i] = 0.5 * (grad[2][1] - grad[1][2]);
-      omega_col[1][i] = 0.5 * (grad[0][2] - grad[2][0]);
-      omega_col[2][i] = 0.5 * (grad[1][0] - grad[0][1]);
-      beta_r[i] = std::numbers::pi * mu * d * d * d;
-    }
-    const LocalChannel channel = channel_ ? channels[i] : local_channel(x);
-    hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)], channel);
-    // DI = (L - B)/(L + B) lies in [0, 1) by definition; a learned DI evaluated outside its training range can
-    // leave it (e.g. u_r+ > 0 in a transient), and a negative DI then fed back into C_d(DI) runs away.
-    if (closures_.deformation) in.di = std::clamp(closures_.deformation->deformation_index(in), 0.0, 0.999);
-    di[i] = in.di;
-    const double vp = std::numbers::pi / 6.0 * d * d * d;
-    const double k_wall = hs::closures::wall_correction_factor(settings_.wall_correction, d, 2.0 * channel.radius_m);
-    beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in) * k_wall;
-    if (!(beta[i] >= 0.0) || !std::isfinite(beta[i])) {
+#pragma omp parallel for schedule(static) if (n_rows > kParallelParticles)
+  for (std::int64_t q = 0; q < n_rows; ++q) {
+    std::string message;
+    if (sample_fluid_at(rows[static_cast<std::size_t>(q)], correct, channels, out, message)) continue;
 #pragma omp critical(coupling_bad_drag)
-      if (i < bad) {
-        bad = i;
-        bad_message = fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
-                                  "gamma+ = {:.4g}, u_r+ = {:.4g}): a drag coefficient must be finite and >= 0",
-                                  beta[i], in.re_p, in.di, in.gamma_plus, in.u_r_plus);
-      }
-      continue;
-    }
-    Vec3 f{};
-    Vec3 lift{};
-    if (settings_.buoyancy_over_footprint) {
-      Vec3 mean{};
-      for (int m = 0; m < kMarkersPerSphere; ++m) mean += buoyancy_density_[map_.cell(i, m)];
-      f = f + (vp / kMarkersPerSphere) * mean;
-    } else {
-      if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
-      if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
-    }
-    if (closures_.lift) {
-      // A C_l fitted on the fluid velocity (the resolved RBC dataset) takes that velocity and its Re_p.
-      const bool flow = closures_.lift->reference_velocity() == hs::closures::LiftVelocity::flow;
-      const double ur = flow ? norm(uf) : norm(uf - particle_velocity(p, i));
-      hs::closures::LiftInputs lift_in = in;
-      if (flow) {
-        lift_in.re_p = hs::common::particle_reynolds(d, ur, fluid_.fluid().kinematic_viscosity_m2_s);
-        lift_in.shear_ratio = lift_in.re_p > 0.0 ? lift_in.re_shear / lift_in.re_p : 0.0;
-      }
-      lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * channel.lift_direction;
-      f = f + lift;
-    }
-    for (int a = 0; a < 3; ++a) {
-      ext[static_cast<std::size_t>(a)][i] = f[a];
-      uf_col[static_cast<std::size_t>(a)][i] = uf[a];
-      lift_col[static_cast<std::size_t>(a)][i] = lift[a];
+    if (q < bad) {
+      bad = q;
+      bad_message = std::move(message);
     }
   }
-  if (bad < n) throw hs::common::NumericalError(bad_message);
+  const bool failed = slabs_ != nullptr ? slabs_->any(bad < n_rows) : bad < n_rows;
+  if (failed) {
+    throw hs::common::NumericalError(bad < n_rows ? bad_message : "coupling: the drag closure failed on another rank");
+  }
+  if (slabs_ != nullptr) {   // the values go to the owners, and the owners' to every copy
+    slabs_->fold_ghost_columns(p, columns);
+    slabs_->update_ghost_columns(p, columns);
+  }
   if (closures_.lift) {   // the fluid gets minus the lift, spread over the sphere's markers
+    const auto& lift_col = p.lift_force_N();
     map_.for_each_cell([&](std::size_t c, std::size_t i) {
       lift_reaction_N_[c] -= Vec3{lift_col[0][i], lift_col[1][i], lift_col[2][i]} / kMarkersPerSphere;
     });
+  }
+}
+
+bool CfdDemCoupling::sample_fluid_at(std::size_t i, bool correct, const std::vector<LocalChannel>& channels,
+                                     SampledColumns& out, std::string& message) {
+  // The columns are taken writable once, before the threaded loop (taking them switches terms on in the store).
+  const ParticleStore& p = dem_.particles();
+  const double rho = fluid_.fluid().density_kg_m3;
+  const double mu = rho * fluid_.fluid().kinematic_viscosity_m2_s;
+  auto& ext = out.external_force_N;
+  auto& beta = out.drag_coefficient_N_s_m;
+  auto& uf_col = out.fluid_velocity_m_s;
+  auto& di = out.deformation_index;
+  auto& beta_r = out.rotational_drag_N_m_s;
+  auto& omega_col = out.fluid_angular_velocity_rad_s;
+  auto& lift_col = out.lift_force_N;
+  const double dt = fluid_.settings().dt_s;
+  const BlockField<double>& eps = fluid_.void_fraction();
+  const Vec3 x = particle_position(p, i);
+  const double d = 2.0 * p.radius_m()[i];
+  Vec3 uf = fluid_.velocity_at(x);
+  if (correct) {
+    // What this sphere gave the fluid in the step just made: minus its drag impulse per time, minus its lift.
+    const Vec3 j{p.drag_impulse_N_s()[0][i], p.drag_impulse_N_s()[1][i], p.drag_impulse_N_s()[2][i]};
+    const Vec3 lift_before{lift_col[0][i], lift_col[1][i], lift_col[2][i]};
+    // M is measured in plasma; a suspension viscosity mu_plasma f(eps) at the sphere scales it by 1 / f (a Stokes
+    // flow's response is inversely proportional to the viscosity, and the smoothed force sits within ~l of the
+    // sphere, where f is the local one: an approximation where f varies over l, e.g. at the cell-free layer).
+    const double factor = settings_.suspension_viscosity != SuspensionViscosity::none
+                              ? fluid_.viscosity_factor()[map_.cell(i, 0)] : 1.0;
+    uf = uf - (1.0 / factor) * self_mobility(d).induced_velocity(x, -1.0 * (j / dt + lift_before));
+  }
+  const auto grad = fluid_.velocity_gradient_at(x);
+  if (settings_.fluid_torque) {
+    // Omega_f = curl(u) / 2 with grad[a][b] = du_a / dx_b; beta_r = pi mu d^3 (a sphere in Stokes flow).
+    omega_col[0][i] = 0.5 * (grad[2][1] - grad[1][2]);
+    omega_col[1][i] = 0.5 * (grad[0][2] - grad[2][0]);
+    omega_col[2][i] = 0.5 * (grad[1][0] - grad[0][1]);
+    beta_r[i] = std::numbers::pi * mu * d * d * d;
+  }
+  const LocalChannel channel = channel_ ? channels[i] : local_channel(x);
+  hs::closures::ClosureInputs in = inputs(i, uf, grad, 1.0 - eps[map_.cell(i, 0)], channel);
+  // DI = (L - B)/(L + B) lies in [0, 1) by definition; a learned DI evaluated outside its training range can
+  // leave it (e.g. u_r+ > 0 in a transient), and a negative DI then fed back into C_d(DI) runs away.
+  if (closures_.deformation) in.di = std::clamp(closures_.deformation->deformation_index(in), 0.0, 0.999);
+  di[i] = in.di;
+  const double vp = std::numbers::pi / 6.0 * d * d * d;
+  const double k_wall = hs::closures::wall_correction_factor(settings_.wall_correction, d, 2.0 * channel.radius_m);
+  beta[i] = 3.0 * std::numbers::pi * mu * d * closures_.drag->correction(in) * k_wall;
+  if (!(beta[i] >= 0.0) || !std::isfinite(beta[i])) {
+    message = fmt::format("coupling: the drag closure gave beta = {:.4g} N s/m (Re_p = {:.4g}, DI = {:.4g}, "
+                          "gamma+ = {:.4g}, u_r+ = {:.4g}): a drag coefficient must be finite and >= 0",
+                          beta[i], in.re_p, in.di, in.gamma_plus, in.u_r_plus);
+    return false;
+  }
+  Vec3 f{};
+  Vec3 lift{};
+  if (settings_.buoyancy_over_footprint) {
+    const Vec3 sum{footprint_sum_[0][i], footprint_sum_[1][i], footprint_sum_[2][i]};
+    f = f + (vp / kMarkersPerSphere) * sum;
+  } else {
+    if (settings_.pressure_force) f = f - vp * fluid_.pressure_gradient_at(x);
+    if (settings_.viscous_force) f = f + vp * fluid_.viscous_force_density_at(x);
+  }
+  if (closures_.lift) {
+    // A C_l fitted on the fluid velocity (the resolved RBC dataset) takes that velocity and its Re_p.
+    const bool flow = closures_.lift->reference_velocity() == hs::closures::LiftVelocity::flow;
+    const double ur = flow ? norm(uf) : norm(uf - particle_velocity(p, i));
+    hs::closures::LiftInputs lift_in = in;
+    if (flow) {
+      lift_in.re_p = hs::common::particle_reynolds(d, ur, fluid_.fluid().kinematic_viscosity_m2_s);
+      lift_in.shear_ratio = lift_in.re_p > 0.0 ? lift_in.re_shear / lift_in.re_p : 0.0;
+    }
+    lift = (std::numbers::pi / 8.0 * rho * d * d * closures_.lift->lift_coefficient(lift_in) * ur * ur) * channel.lift_direction;
+    f = f + lift;
+  }
+  for (int a = 0; a < 3; ++a) {
+    ext[static_cast<std::size_t>(a)][i] = f[a];
+    uf_col[static_cast<std::size_t>(a)][i] = uf[a];
+    lift_col[static_cast<std::size_t>(a)][i] = lift[a];
+  }
+  return true;
+}
+
+void CfdDemCoupling::sum_over_footprints() {
+  fill_buoyancy_density();
+  const ParticleStore& p = dem_.particles();
+  for (ParticleStore::Column& column : footprint_sum_) column.assign(p.size(), 0.0);
+  // Each row adds the markers in this block's cells, in marker order (on one rank: all of them, as a loop over the
+  // markers would); on slabs the parts summed by the neighbours go to the owner, and the whole to every copy.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int m = 0; m < kMarkersPerSphere; ++m) {
+      const std::size_t c = map_.cell(i, m);
+      if (c == DividedMap::kElsewhere) continue;
+      for (int a = 0; a < 3; ++a) footprint_sum_[static_cast<std::size_t>(a)][i] += buoyancy_density_[c][a];
+    }
+  }
+  if (slabs_ != nullptr) {
+    ParticleStore& writable = dem_.particles();
+    const std::vector<ParticleStore::Column*> columns{&footprint_sum_[0], &footprint_sum_[1], &footprint_sum_[2]};
+    slabs_->fold_ghost_columns(writable, columns);
+    slabs_->update_ghost_columns(writable, columns);
   }
 }
 
@@ -274,7 +358,7 @@ void CfdDemCoupling::fill_fields() {
   const double dt = fluid_.settings().dt_s;
   if (refresh && settings_.void_fraction_feedback) {
     BlockField<double>& eps = fluid_.void_fraction();
-    stats_.lost_solid_volume_m3 = map_.void_fraction(p, settings_.eps_min, eps, smoothing_.get());
+    stats_.lost_solid_volume_m3 = summed(map_.void_fraction(p, settings_.eps_min, eps, smoothing_.get()));
     BlockField<double>& rate = fluid_.void_fraction_rate_1_s();
     for (std::size_t c = 0; c < eps.data().size(); ++c) {
       // No rate on the first coupling step: eps_old is not a state of this run (methods note sec. 8, item 6).
@@ -327,13 +411,15 @@ void CfdDemCoupling::exchange_drag() {
   stats_.drag_impulse_particles_N_s = {};
   const auto& imp = p.drag_impulse_N_s();
   for (std::size_t i = 0; i < map_.size(); ++i) stats_.drag_impulse_particles_N_s += Vec3{imp[0][i], imp[1][i], imp[2][i]};
+  stats_.drag_impulse_particles_N_s = summed(stats_.drag_impulse_particles_N_s);
+  const long particles = summed(static_cast<long>(map_.size()));
   // Each cell adds its markers' impulses first, then the share of the imbalance of earlier steps given back through
   // the particles' cells: the order of the serial loops this replaces.
-  const Vec3 share = map_.size() > 0 ? stats_.pending_N_s / static_cast<double>(map_.size() * kMarkersPerSphere) : Vec3{};
+  const Vec3 share = particles > 0 ? stats_.pending_N_s / static_cast<double>(particles * kMarkersPerSphere) : Vec3{};
   map_.for_each_cell([&](std::size_t c, std::size_t i) {
     f[c] -= Vec3{imp[0][i], imp[1][i], imp[2][i]} / (kMarkersPerSphere * map_.fluid_volume_m3(c) * dt);
   });
-  if (map_.size() > 0) {
+  if (particles > 0) {
     map_.for_each_cell([&](std::size_t c, std::size_t) { f[c] -= share / (map_.fluid_volume_m3(c) * dt); });
   }
   const BlockField<double>& ksl = fluid_.implicit_coefficient_kg_m3_s();
@@ -364,10 +450,14 @@ void CfdDemCoupling::exchange_drag() {
       }
     }
   }
+  stats_.explicit_to_fluid_N_s = summed(stats_.explicit_to_fluid_N_s);
 }
 
 void CfdDemCoupling::dem_substeps() {
-  if (steps_ == 0) particle_forces();
+  if (steps_ == 0) {
+    if (slabs_ != nullptr) dem_.initialize();   // the ghosts, whose markers and fluid samples count too
+    particle_forces();
+  }
   ParticleStore& p = dem_.particles();
   for (auto& col : p.drag_impulse_N_s()) std::fill(col.begin(), col.end(), 0.0);
   const double dt = fluid_.settings().dt_s;
@@ -383,6 +473,32 @@ void CfdDemCoupling::dem_substeps() {
   for (int s = 0; s < n; ++s) dem_.step();
   last_substeps_ = n;
   total_substeps_ += n;
+  if (slabs_ != nullptr) refresh_ghosts();
+}
+
+void CfdDemCoupling::refresh_ghosts() {
+  ParticleStore& p = dem_.particles();
+  slabs_->update_ghosts(p);   // the last step's second half kick moved the owners' velocities
+  std::vector<ParticleStore::Column*> columns{&p.drag_coefficient_N_s_m()};
+  for (auto* v : {&p.drag_impulse_N_s(), &p.lift_force_N()}) {
+    for (ParticleStore::Column& column : *v) columns.push_back(&column);
+  }
+  slabs_->update_ghost_columns(p, columns);
+}
+
+Vec3 CfdDemCoupling::summed(Vec3 v) const {
+  if (slabs_ != nullptr) MPI_Allreduce(MPI_IN_PLACE, &v[0], 3, MPI_DOUBLE, MPI_SUM, slabs_->comm());
+  return v;
+}
+
+double CfdDemCoupling::summed(double x) const {
+  if (slabs_ != nullptr) MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_SUM, slabs_->comm());
+  return x;
+}
+
+long CfdDemCoupling::summed(long n) const {
+  if (slabs_ != nullptr) MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG, MPI_SUM, slabs_->comm());
+  return n;
 }
 
 void CfdDemCoupling::particles_to_grid() {
@@ -419,7 +535,7 @@ Vec3 CfdDemCoupling::fluid_momentum_kg_m_s() const {
       }
     }
   }
-  return total;
+  return summed(total);
 }
 
 Vec3 CfdDemCoupling::received_by_fluid_N_s() const {
@@ -446,14 +562,14 @@ Vec3 CfdDemCoupling::received_by_fluid_N_s() const {
       }
     }
   }
-  return total;
+  return summed(total);
 }
 
 Vec3 CfdDemCoupling::particle_momentum_kg_m_s() const {
   const ParticleStore& p = dem_.particles();
   Vec3 total{};
   for (std::size_t i = 0; i < p.n_owned(); ++i) total += p.mass_kg()[i] * particle_velocity(p, i);
-  return total;
+  return summed(total);
 }
 
 }  // namespace hs::unresolved

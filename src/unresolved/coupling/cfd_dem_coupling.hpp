@@ -2,7 +2,9 @@
 // The CFD-DEM coupling of one FvmSolver and one DemSystem (CFDEM model A), with closures chosen by name.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "closures/deformation_closure.hpp"
@@ -106,6 +108,10 @@ struct ExchangeStats {
   double lost_solid_volume_m3 = 0.0;               // dropped by the eps_min clipping
 };
 
+/// On z-slabs (the fluid's grid and the DEM both on the same slabs, docs/cfd-dem.md "Distributed CFD-DEM" step 4)
+/// each block deposits the markers in its cells (DividedMap), samples the fluid at the particles centred in its cells
+/// (owned or remote ghosts) and sends the results to their owners, and sums the exchange bookkeeping over the ranks;
+/// every member is then collective. Not yet on slabs (ConfigError): the channel frame.
 /// One coupled step (CFDEM order): particles -> grid (divided map, eps, Us, Ksl), fluid at the particles
 /// (velocity, gradient, pressure gradient, viscous force), per-particle forces (pressure gradient, viscous and
 /// lift explicit, drag implicit with beta = 3 pi mu d_p correction K_wall), n_coupling DEM steps, the exchange of the
@@ -160,6 +166,13 @@ class CfdDemCoupling {
 
  private:
   void particle_forces();
+  /// On slabs, after the DEM sub-steps: the remote ghosts' positions, velocities and the coupling columns the
+  /// deposit reads (drag coefficient, drag impulse, lift) from their owners.
+  void refresh_ghosts();
+  /// Sums over the ranks on slabs (identity on one).
+  [[nodiscard]] hs::common::Vec3 summed(hs::common::Vec3 v) const;
+  [[nodiscard]] double summed(double x) const;
+  [[nodiscard]] long summed(long n) const;
   void fill_fields();
   void exchange_drag();
   [[nodiscard]] hs::common::Vec3 received_by_fluid_N_s() const;
@@ -172,6 +185,20 @@ class CfdDemCoupling {
     double mean_velocity_m_s;
   };
   [[nodiscard]] LocalChannel local_channel(const hs::common::Vec3& x);
+  /// The particle columns the fluid's values at a particle go to.
+  struct SampledColumns {
+    ParticleStore::Vec3Columns& external_force_N;
+    ParticleStore::Vec3Columns& fluid_velocity_m_s;
+    ParticleStore::Vec3Columns& lift_force_N;
+    ParticleStore::Vec3Columns& fluid_angular_velocity_rad_s;
+    ParticleStore::Column& drag_coefficient_N_s_m;
+    ParticleStore::Column& rotational_drag_N_m_s;
+    ParticleStore::Column& deformation_index;
+  };
+  /// The fluid's values at particle i (owned, or on slabs a remote ghost centred here) written into its row of
+  /// `out`; false with `message` set for a bad drag coefficient.
+  bool sample_fluid_at(std::size_t i, bool correct, const std::vector<LocalChannel>& channels, SampledColumns& out,
+                       std::string& message);
   [[nodiscard]] hs::closures::ClosureInputs inputs(std::size_t i, const hs::common::Vec3& uf,
                                                     const std::array<hs::common::Vec3, 3>& grad, double local_ht,
                                                     const LocalChannel& channel) const;
@@ -179,9 +206,12 @@ class CfdDemCoupling {
   [[nodiscard]] const SelfMobility& self_mobility(double diameter_m);
   /// buoyancy_density_ from the fluid's present pressure and stress (CouplingSettings::buoyancy_over_footprint).
   void fill_buoyancy_density();
+  /// footprint_sum_: buoyancy_density_ summed over each particle's markers' cells (collective on slabs).
+  void sum_over_footprints();
 
   FvmSolver& fluid_;
   DemSystem& dem_;
+  DemSlabs* slabs_;   // the DEM's (null: one rank holds everything)
   CouplingSettings settings_;
   CouplingClosures closures_;
   DividedMap map_;
@@ -196,7 +226,9 @@ class CfdDemCoupling {
   std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
   std::unique_ptr<ChannelFrame> channel_;       // the channel frame's memo (closure_frame = channel)
   std::unique_ptr<DiffusionSmoothing> smoothing_;   // smoothing_length_m > 0
+  std::unique_ptr<FvmGrid> whole_grid_;   // on slabs, for the self-mobility tables (self_induced_correction)
   BlockField<hs::common::Vec3> buoyancy_density_;   // buoyancy_over_footprint: -grad p + div tau at cell centres, N/m^3
+  std::array<ParticleStore::Column, 3> footprint_sum_;   // per store row: its sum over the markers, N/m^3
 };
 
 }  // namespace hs::unresolved

@@ -7,6 +7,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include "common/errors.hpp"
 
@@ -42,6 +43,16 @@ struct DiffusionSmoothing::Factor {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
 };
 
+struct DiffusionSmoothing::Halo {
+  MPI_Comm comm = MPI_COMM_NULL;
+  std::array<int, 2> neighbour{MPI_PROC_NULL, MPI_PROC_NULL};   // below, above (MPI_PROC_NULL: the box's wall)
+  // To the neighbour below go the rows of plane 0 (its ghost plane n), above those of plane n - 1 (its plane -1).
+  std::array<std::vector<std::size_t>, 2> send;
+  // The ghost rows of plane -1 (from below) and of plane n (from above): first row and count, after the own rows.
+  std::array<std::size_t, 2> first{};
+  std::array<std::size_t, 2> count{};
+};
+
 DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m, Method method) : length_m_(length_m) {
   if (!(length_m > 0.0) || !std::isfinite(length_m)) {
     throw hs::common::ConfigError(fmt::format("coupling: smoothing length {} m must be > 0", length_m));
@@ -62,6 +73,31 @@ DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m, Met
       }
     }
   }
+  // Several slabs: the neighbours' fluid cells next to the block become ghost rows after the own ones (their fluid
+  // fractions are in the grid's ghost planes, the whole grid's to the bit, so both sides list the same cells in the
+  // same order), and the block's first and last planes' rows are what it sends.
+  const hs::common::CartesianDecomposition* slabs = grid.slabs();
+  if (slabs != nullptr && slabs->ranks_per_axis()[2] > 1) {
+    auto halo = std::make_shared<Halo>();
+    halo->comm = slabs->comm();
+    std::size_t next = cell_index_.size();
+    for (int side = 0; side < 2; ++side) {
+      const auto s = static_cast<std::size_t>(side);
+      halo->neighbour[s] = slabs->neighbour(2, side);
+      halo->first[s] = next;
+      if (halo->neighbour[s] == MPI_PROC_NULL) continue;
+      const int ghost_plane = side == 0 ? -1 : n[2];
+      const int own_plane = side == 0 ? 0 : n[2] - 1;
+      for (int j = 0; j < n[1]; ++j) {
+        for (int i = 0; i < n[0]; ++i) {
+          if (const std::size_t g = fraction.index(i, j, ghost_plane); fraction[g] > 0.0) row_of[g] = static_cast<long>(next++);
+          if (const long r = row_of[fraction.index(i, j, own_plane)]; r >= 0) halo->send[s].push_back(static_cast<std::size_t>(r));
+        }
+      }
+      halo->count[s] = next - halo->first[s];
+    }
+    halo_ = std::move(halo);
+  }
   const double scale = length_m * length_m * dx;
   row_start_.push_back(0);
   for (std::size_t r = 0; r < cell_index_.size(); ++r) {
@@ -78,11 +114,16 @@ DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m, Met
       for (const int side : {-1, 1}) {
         std::array<int, 3> nb = ijk;
         nb[static_cast<std::size_t>(a)] += side;
-        if (nb[static_cast<std::size_t>(a)] < 0 || nb[static_cast<std::size_t>(a)] >= na) {
-          if (!grid.periodic(a)) continue;   // the box's own faces: walls and openings let nothing diffuse out
-          nb[static_cast<std::size_t>(a)] = (nb[static_cast<std::size_t>(a)] + na) % na;
+        const bool beyond = nb[static_cast<std::size_t>(a)] < 0 || nb[static_cast<std::size_t>(a)] >= na;
+        if (beyond && halo_ && a == 2) {   // a neighbour's ghost row, or the box's wall
+          if (halo_->neighbour[side < 0 ? 0 : 1] == MPI_PROC_NULL) continue;
+        } else {
+          if (beyond) {
+            if (!grid.periodic(a)) continue;   // the box's own faces: walls and openings let nothing diffuse out
+            nb[static_cast<std::size_t>(a)] = (nb[static_cast<std::size_t>(a)] + na) % na;
+          }
+          if (na == 1) continue;   // a one-cell periodic axis: the cell is its own neighbour
         }
-        if (na == 1) continue;   // a one-cell periodic axis: the cell is its own neighbour
         // The face between the two cells is the velocity node of the higher cell index (node 0 across a periodic wrap).
         const std::array<int, 3> face = side > 0 ? nb : ijk;
         const double area = grid.open_areas(a)(face[0], face[1], face[2]);
@@ -99,7 +140,7 @@ DiffusionSmoothing::DiffusionSmoothing(const FvmGrid& grid, double length_m, Met
   inverse_diagonal_.reserve(diagonal_.size());
   for (const double d : diagonal_) inverse_diagonal_.push_back(1.0 / d);
   const std::size_t rows = cell_index_.size();
-  if (method == Method::conjugate_gradient || rows == 0 || rows > kDirectMaxRows) return;
+  if (method == Method::conjugate_gradient || halo_ || rows == 0 || rows > kDirectMaxRows) return;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(rows + neighbour_.size());
   for (std::size_t r = 0; r < rows; ++r) {
@@ -145,6 +186,27 @@ bool DiffusionSmoothing::solve_direct(std::vector<double>& q, int columns) {
   return true;
 }
 
+void DiffusionSmoothing::exchange_ghost_rows(std::vector<double>& x, std::size_t columns) const {
+  if (!halo_) return;
+  // Plane 0's rows go down while plane n's ghosts come from above (tag 0), then plane n - 1's go up while plane -1's
+  // ghosts come from below (tag 1); at the box's wall MPI_PROC_NULL sends and receives nothing.
+  std::vector<double> out;
+  for (int side = 0; side < 2; ++side) {
+    const auto s = static_cast<std::size_t>(side);
+    const std::size_t from = 1 - s;   // the ghosts filled by this message: from the other side's neighbour
+    out.clear();
+    for (const std::size_t r : halo_->send[s]) out.insert(out.end(), x.data() + r * columns, x.data() + (r + 1) * columns);
+    MPI_Sendrecv(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, halo_->neighbour[s], side,
+                 x.data() + halo_->first[from] * columns, static_cast<int>(halo_->count[from] * columns), MPI_DOUBLE,
+                 halo_->neighbour[from], side, halo_->comm, MPI_STATUS_IGNORE);
+  }
+}
+
+template <std::size_t N>
+void DiffusionSmoothing::sum_over_ranks(std::array<double, N>& values) const {
+  if (halo_) MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(N), MPI_DOUBLE, MPI_SUM, halo_->comm);
+}
+
 template <std::size_t K>
 int DiffusionSmoothing::solve(std::vector<double>& q) {
   // b = V q; the start x = q is exact where q is flat, so smooth regions converge at once. Each column j is its own
@@ -152,11 +214,15 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
   // as it is, so its result does not depend on which other fields share the solve.
   const std::size_t rows = cell_index_.size();
   const std::size_t size = rows * K;
+  // The operator reads its neighbours' values also from the ghost rows after the own ones (distributed).
+  const std::size_t with_ghosts = halo_ ? (halo_->first[1] + halo_->count[1]) * K : size;
   r_.resize(size);
   z_.resize(size);
-  p_.resize(size);
+  p_.resize(with_ghosts);
   ap_.resize(size);
+  q.resize(with_ghosts);
   std::vector<double>& x = q;
+  exchange_ghost_rows(x, K);
   std::array<double, K> b_norm{};
   std::array<double, K> rz{};
   std::array<double, K> r_norm{};   // |r|^2, summed where r is updated (one pass fewer over the vectors)
@@ -176,6 +242,9 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
       r_norm[j] += r_[i] * r_[i];
     }
   }
+  sum_over_ranks(b_norm);
+  sum_over_ranks(rz);
+  sum_over_ranks(r_norm);
   int remaining = 0;
   for (std::size_t j = 0; j < K; ++j) {
     b_norm[j] = std::sqrt(b_norm[j]);
@@ -192,7 +261,9 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
     }
     if (remaining == 0) return *std::max_element(iterations.begin(), iterations.end());
     std::array<double, K> pap{};
+    exchange_ghost_rows(p_, K);
     apply_dot<K>(diagonal_, row_start_, neighbour_, coefficient_, p_, ap_, pap);
+    sum_over_ranks(pap);
     std::array<double, K> alpha{};   // 0 for a converged column: its x and r stay
     for (std::size_t j = 0; j < K; ++j) alpha[j] = active[j] ? rz[j] / pap[j] : 0.0;
     std::array<double, K> rz_new{};
@@ -207,6 +278,8 @@ int DiffusionSmoothing::solve(std::vector<double>& q) {
         r_norm[j] += r_[i] * r_[i];
       }
     }
+    sum_over_ranks(rz_new);
+    sum_over_ranks(r_norm);
     std::array<double, K> beta{};
     for (std::size_t j = 0; j < K; ++j) {
       if (!active[j]) continue;

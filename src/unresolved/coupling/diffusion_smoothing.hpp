@@ -29,6 +29,10 @@ namespace hs::unresolved {
 /// The operator is assembled once (the mesh is static). Up to kDirectMaxRows fluid cells it is also factorised once
 /// (sparse LDL^T, AMD ordering), and each smoothing is two triangular solves, checked against the same 1e-13
 /// relative residual (CG from the start if ever above it); on larger grids, or with Method::conjugate_gradient, CG.
+/// On z-slabs split over several ranks (the grid's slabs()) each rank holds the rows of its block's cells and, as
+/// ghost rows, the fluid cells of the neighbours' planes next to it; the CG exchanges those every iteration and sums
+/// its dot products over the ranks (docs/cfd-dem.md "Distributed CFD-DEM" step 4). No factor then: the result agrees
+/// with one rank's to the solver's tolerance, not to the bit. On one slab the whole-grid path runs unchanged.
 /// smooth_together() solves several fields at once: one pass over the factor or the operator for all of them (in
 /// CG each field keeps its own scalars and stopping test), so each result is what smooth() alone gives, to the
 /// solver's tolerance.
@@ -51,6 +55,8 @@ class DiffusionSmoothing {
   /// D = 30 um tube at 15 cells across (10,600 rows, l / dx 1.4) the CG smoothing took 134 ms of each step (68% of
   /// it), so the factor is kept up to the 20-cells-across tube (~25,000 rows).
   static constexpr std::size_t kDirectMaxRows = 40000;
+  /// Whether the rows are spread over several ranks (collective smoothing, CG).
+  [[nodiscard]] bool distributed() const { return halo_ != nullptr; }
   /// Whether smoothing uses the factor (false: CG).
   [[nodiscard]] bool direct() const { return factor_ != nullptr; }
 
@@ -67,6 +73,12 @@ class DiffusionSmoothing {
   /// The factor's solve of the same system; false if a column's residual is above the CG's tolerance.
   bool solve_direct(std::vector<double>& q, int columns);
   struct Factor;   // Eigen's LDL^T, kept out of this header
+  struct Halo;     // distributed: the ghost rows and the rows they copy
+  /// Distributed: fills the ghost rows of the `columns`-wide vector x from the neighbours (identity otherwise).
+  void exchange_ghost_rows(std::vector<double>& x, std::size_t columns) const;
+  /// Distributed: sums the values over the ranks in place (identity otherwise).
+  template <std::size_t N>
+  void sum_over_ranks(std::array<double, N>& values) const;
 
   double length_m_;
   std::vector<std::size_t> cell_index_;   // compact row -> BlockField flat index
@@ -79,6 +91,7 @@ class DiffusionSmoothing {
   std::vector<double> coefficient_;       // l^2 dx (open area fraction): positive, symmetric
   std::vector<double> x_, r_, z_, p_, ap_;   // CG work vectors, rows x columns (row-major: one row's columns together)
   std::shared_ptr<const Factor> factor_;   // null: CG
+  std::shared_ptr<const Halo> halo_;       // null: every row here
   int last_iterations_ = 0;
 };
 

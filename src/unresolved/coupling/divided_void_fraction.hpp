@@ -50,6 +50,11 @@ class DividedMap {
   /// Cell flat index of marker m of the store's row i (owned, or on slabs a remote ghost), or kElsewhere.
   [[nodiscard]] std::size_t cell(std::size_t i, int m) const { return cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)]; }
 
+  /// Whether row i's centre lies in one of this block's cells (every owned row on one rank; on slabs an owned
+  /// particle may have drifted into a neighbour's plane since the last rebuild, and a remote ghost into this block's):
+  /// the fluid is sampled at a particle by the one block holding its centre.
+  [[nodiscard]] bool centred_here(std::size_t i) const { return cell(i, 0) != kElsewhere; }   // marker 0: the centre
+
   /// Particle-to-grid sums without races and with the bits of a serial loop: threaded over the cells that hold
   /// markers, f(cell, row) is called for each marker in the cell (row: the store's row of its particle) in
   /// ascending (id, marker), the order of a loop over the particles by id and their markers. So every sum comes out

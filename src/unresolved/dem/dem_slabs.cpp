@@ -240,6 +240,51 @@ void DemSlabs::fold_values(std::vector<double>& value) const {
   }
 }
 
+void DemSlabs::update_ghost_columns(const ParticleStore& particles,
+                                    const std::vector<ParticleStore::Column*>& columns) const {
+  const std::size_t width = columns.size();
+  std::array<std::vector<double>, 2> out;
+  std::array<std::vector<double>, 2> in;
+  for (std::size_t s = 0; s < 2; ++s) {
+    out[s].reserve(width * sent_[s].size());
+    for (const std::size_t i : sent_[s]) {
+      const std::size_t c = particles.coupling_row(i);
+      for (const ParticleStore::Column* column : columns) out[s].push_back((*column)[c]);
+    }
+    in[s].resize(width * received_count_[s]);
+  }
+  exchange(out, in, true, 70);
+  for (std::size_t s = 0; s < 2; ++s) {
+    for (std::size_t k = 0; k < received_count_[s]; ++k) {
+      for (std::size_t j = 0; j < width; ++j) (*columns[j])[received_first_[s] + k] = in[s][width * k + j];
+    }
+  }
+}
+
+void DemSlabs::fold_ghost_columns(const ParticleStore& particles,
+                                  const std::vector<ParticleStore::Column*>& columns) const {
+  const std::size_t width = columns.size();
+  std::array<std::vector<double>, 2> out;
+  std::array<std::vector<double>, 2> in;
+  for (std::size_t s = 0; s < 2; ++s) {
+    out[s].reserve(width * received_count_[s]);
+    for (std::size_t g = received_first_[s]; g < received_first_[s] + received_count_[s]; ++g) {
+      for (ParticleStore::Column* column : columns) {
+        out[s].push_back((*column)[g]);
+        (*column)[g] = 0.0;
+      }
+    }
+    in[s].resize(width * sent_[s].size());
+  }
+  exchange(out, in, true, 80);
+  for (std::size_t s = 0; s < 2; ++s) {
+    for (std::size_t k = 0; k < sent_[s].size(); ++k) {
+      const std::size_t c = particles.coupling_row(sent_[s][k]);
+      for (std::size_t j = 0; j < width; ++j) (*columns[j])[c] += in[s][width * k + j];
+    }
+  }
+}
+
 void DemSlabs::exchange(const std::array<std::vector<double>, 2>& out, std::array<std::vector<double>, 2>& in,
                         bool sizes_known, int tag) const {
   // A message sent towards side s has tag + s; the neighbour on side s sent this rank its message towards 1 - s.

@@ -56,6 +56,14 @@ class DemSlabs {
   /// added to the particle it copies, on its rank, and cleared here.
   void fold_values(std::vector<double>& value) const;
 
+  /// The coupling's columns (one value per row each, e.g. the drag coefficient, the lift's components): sends the
+  /// owners' values to their remote ghosts (a periodic image sends the values of the particle it copies).
+  void update_ghost_columns(const ParticleStore& particles, const std::vector<ParticleStore::Column*>& columns) const;
+  /// The reverse: adds each remote ghost's values to the particle it copies on its owner's rank (to that particle's
+  /// coupling row when the owner sent an image) and clears them here. A value computed by exactly one copy, the others
+  /// holding zero, arrives unchanged: x + 0 is x.
+  void fold_ghost_columns(const ParticleStore& particles, const std::vector<ParticleStore::Column*>& columns) const;
+
   /// Whether any rank's flag is set (rebuild decisions).
   [[nodiscard]] bool any(bool mine) const;
   [[nodiscard]] double max(double mine) const;

@@ -61,6 +61,8 @@ class DemSystem {
   /// the same in a run and in its restart, so both choose the same step.
   [[nodiscard]] DragLimitedStep drag_limited_step();
   [[nodiscard]] const NeighborList& neighbor_list() const { return list_; }
+  /// The slabs this system runs on (null: the whole box here).
+  [[nodiscard]] DemSlabs* slabs() const { return slabs_; }
   [[nodiscard]] const DemStepStats& stats() const { return stats_; }
 
   /// Adds an owned particle of the configured size and density (id = running count unless given).
@@ -75,6 +77,10 @@ class DemSystem {
   std::size_t remove_particles(const std::vector<bool>& remove);
   /// Call after changing particles() structurally (added/removed particles, moved positions by hand).
   void particles_changed() { initialized_ = false; }
+  /// What insert_particle() and remove_particles() do first: takes the contact springs from the list, so the next
+  /// step rebuilds with them and keeps the forces. On slabs every rank calls it when any rank edits (the rebuild that
+  /// follows is collective).
+  void begin_edit();
   /// Called in every force evaluation after contacts, before the second half kick: may add to force_N() and
   /// torque_Nm() of owned particles (e.g. forces that depend on the current positions).
   void set_force_hook(std::function<void(ParticleStore&)> hook) { hook_ = std::move(hook); }
@@ -100,7 +106,6 @@ class DemSystem {
   [[nodiscard]] double max_speed_m_s() const;
 
  private:
-  void begin_edit();
   /// A sphere of the settings' radius and mass at rest in rotation.
   [[nodiscard]] ParticleState new_particle(const hs::common::Vec3& position_m, const hs::common::Vec3& velocity_m_s,
                                            std::int64_t id) const;

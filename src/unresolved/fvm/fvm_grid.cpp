@@ -128,6 +128,14 @@ Vec3 FvmGrid::wrap(const Vec3& x_m) const {
     if (!periodic(a)) continue;
     const double lo = spec_.box_m.lo[a];   // the whole box's period, also on a block
     const double length = global_n_[static_cast<std::size_t>(a)] * dx_m_;
+    if (slabs_ != nullptr && a == 2) {
+      // A block takes the image nearest to its middle (within half a period): a point just across the seam from the
+      // bottom block is then read from that block's ghost planes, not from the top block's planes it does not hold.
+      const double middle = lo + (first_plane_ + 0.5 * n_[2]) * dx_m_;
+      const double periods = std::floor((x[a] - middle) / length + 0.5);
+      if (periods != 0.0) x[a] -= periods * length;
+      continue;
+    }
     const double t = x[a] - lo;
     if (t >= 0.0 && t < length) continue;   // inside already (nearly always): no division, the point unchanged
     x[a] = lo + std::fmod(std::fmod(t, length) + length, length);

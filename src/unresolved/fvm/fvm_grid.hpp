@@ -99,6 +99,8 @@ class FvmGrid {
   [[nodiscard]] bool periodic(int axis) const { return periodic_[static_cast<std::size_t>(axis)]; }
   [[nodiscard]] const SideCondition& side(int axis, int high) const { return spec_.sides[static_cast<std::size_t>(2 * axis + high)]; }
   [[nodiscard]] const hs::common::Shape& shape() const { return shape_; }
+  /// What the grid was built from (every block's the same).
+  [[nodiscard]] const FvmGridSpec& spec() const { return spec_; }
   /// The openings of the spec, in its order, and the face nodes each one holds (fvm_grid_openings.cpp).
   [[nodiscard]] const std::vector<hs::common::OpeningCondition>& openings() const { return spec_.openings; }
   [[nodiscard]] const OpeningNodes& opening_nodes(std::size_t k) const { return opening_nodes_[k]; }
@@ -112,7 +114,8 @@ class FvmGrid {
   [[nodiscard]] hs::common::Vec3 node_position_m(int c, int i, int j, int k) const;
   /// The cell holding x (periodic axes wrapped), or nothing when x is outside the box.
   [[nodiscard]] std::optional<std::array<int, 3>> cell_of(const hs::common::Vec3& x_m) const;
-  /// Wraps x into the box along periodic axes.
+  /// Wraps x into the box along periodic axes; on a block, along z to the image nearest the block (so a point within
+  /// the ghost planes across a periodic seam stays there).
   [[nodiscard]] hs::common::Vec3 wrap(const hs::common::Vec3& x_m) const;
 
   [[nodiscard]] NodeKind kind(int c, int i, int j, int k) const {
