@@ -10,6 +10,7 @@
 #include "common/geometry/opening.hpp"
 #include "common/io/checkpoint.hpp"
 #include "unresolved/dem/cell_injector.hpp"
+#include "unresolved/dem/dem_slabs.hpp"
 #include "unresolved/dem/dem_system.hpp"
 #include "unresolved/dem/particle_params.hpp"
 #include "unresolved/dem/particle_store.hpp"
@@ -47,16 +48,25 @@ struct FluidAtOpenings {
 /// never repeat; each new cell records the index of its inlet in ParticleStore::inlet_opening(). Bookkeeping: cells_injected() + (particles at the start) = cells_removed() + n_owned(), exactly.
 class OpeningTraffic {
  public:
-  /// ConfigError (naming the opening and key) for a bad opening or hematocrit.
-  OpeningTraffic(const OpeningTrafficSpec& spec, const hs::common::Shape& shape, const Domain& domain);
+  /// ConfigError (naming the opening and key) for a bad opening or hematocrit. `slabs` (the DEM's, may be null):
+  /// each rank removes its own particles, and an inlet injects on the rank whose slab holds its centre, which must
+  /// face along z and hold the injection region and a cut-off beyond it (so a new cell needs no ghost before the next
+  /// rebuild, and the cells near the region are all that rank's); ConfigError on every rank otherwise.
+  OpeningTraffic(const OpeningTrafficSpec& spec, const hs::common::Shape& shape, const Domain& domain,
+                 const DemSlabs* slabs = nullptr);
 
   /// On a DemSystem: contact springs and forces of the particles that stay are kept (DemSystem::remove_particles,
-  /// insert_particle).
+  /// insert_particle). On slabs collective: new cells get the ids one rank would give them (inlet by inlet, above
+  /// the largest id on any rank), and every rank begins an edit when one does.
   void exchange(DemSystem& dem, double dt_s, const FluidAtOpenings& fluid);
-  /// On a bare store (particles moved by a prescribed velocity, no contacts): the same removal and injection.
+  /// On a bare store (particles moved by a prescribed velocity, no contacts): the same removal and injection (one
+  /// rank only).
   void exchange(ParticleStore& particles, double dt_s, const FluidAtOpenings& fluid);
 
+  /// This rank's counts (on slabs: the cells it removed and injected).
   [[nodiscard]] const std::vector<OpeningCounters>& counters() const { return counters_; }
+  /// Every rank's counts summed (collective on slabs; counters() on one rank).
+  [[nodiscard]] std::vector<OpeningCounters> summed_counters() const;
   [[nodiscard]] std::int64_t cells_injected() const;
   [[nodiscard]] std::int64_t cells_removed() const;
   /// The injector of opening `index` (null for an outlet), e.g. for its debt.
@@ -68,6 +78,8 @@ class OpeningTraffic {
   void read_state(const hs::common::Checkpoint& cp, const std::string& prefix);
 
  private:
+  /// Slabs: which inlets this rank injects at; ConfigError on every rank when one does not fit its slab.
+  void place_inlets(const OpeningTrafficSpec& spec);
   /// Flags the owned particles leaving, counts them; returns the flags (empty when none leaves).
   std::vector<bool> leaving(const ParticleStore& particles);
   std::vector<std::vector<NewCell>> planned(const ParticleStore& particles, double dt_s, const FluidAtOpenings& fluid);
@@ -76,6 +88,8 @@ class OpeningTraffic {
   std::vector<hs::common::Opening> openings_;
   ParticleParams params_;
   std::vector<std::optional<CellInjector>> injectors_;
+  const DemSlabs* slabs_;
+  std::vector<bool> injects_here_;   // per opening: an inlet whose cells this rank places
   std::vector<OpeningCounters> counters_;
   std::int64_t next_id_ = 0;
 };
