@@ -56,11 +56,21 @@ nlohmann::json skeleton_groups(const CfdDemSolvers& run) {
 
 }  // namespace
 
-CfdDemSolvers::CfdDemSolvers(CfdDemSetup setup)
-    : shape_(std::move(setup.shape)), coupling_settings_(setup.coupling) {
-  grid_ = std::make_unique<FvmGrid>(*shape_, setup.grid);
-  dem_ = std::make_unique<DemSystem>(setup.dem, shape_.get());
-  fluid_ = std::make_unique<FvmSolver>(*grid_, setup.fluid, setup.piso, setup.drive);
+CfdDemSolvers::CfdDemSolvers(CfdDemSetup setup, MPI_Comm comm)
+    : shape_(std::move(setup.shape)), comm_(comm), coupling_settings_(setup.coupling) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  if (ranks > 1) {
+    const bool periodic_z = setup.grid.sides[4].type == SideType::periodic;
+    decomposition_ = std::make_unique<hs::common::CartesianDecomposition>(
+        hs::common::DecompositionSpec{.global_nodes = FvmGrid::cells_of(setup.grid), .periodic = {false, false, periodic_z},
+                                      .ranks_per_axis = {1, 1, 0}, .ghost = 2},
+        comm);
+    dem_slabs_ = std::make_unique<DemSlabs>(*decomposition_, setup.dem.domain, setup.grid.dx_m);
+  }
+  grid_ = std::make_unique<FvmGrid>(*shape_, setup.grid, decomposition_.get());
+  dem_ = std::make_unique<DemSystem>(setup.dem, shape_.get(), dem_slabs_.get());
+  fluid_ = std::make_unique<FvmSolver>(*grid_, setup.fluid, setup.piso, setup.drive, comm);
   coupling_ = std::make_unique<CfdDemCoupling>(*fluid_, *dem_, setup.coupling, std::move(setup.closures));
 }
 

@@ -10,13 +10,16 @@
 #include <string>
 #include <vector>
 
+#include <mpi.h>
 #include <nlohmann/json.hpp>
 
 #include "common/geometry/shape.hpp"
 #include "common/io/checkpoint.hpp"
+#include "common/parallel/cartesian_decomposition.hpp"
 #include "common/progress.hpp"
 #include "common/time_loop.hpp"
 #include "unresolved/coupling/cfd_dem_coupling.hpp"
+#include "unresolved/dem/dem_slabs.hpp"
 #include "unresolved/dem/dem_system.hpp"
 #include "unresolved/fvm/fvm_grid.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
@@ -35,10 +38,12 @@ struct CfdDemSetup {
   CouplingClosures closures;
 };
 
-/// The solvers of one run: grid, fluid, DEM and coupling, all over one shape.
+/// The solvers of one run: grid, fluid, DEM and coupling, all over one shape. On a communicator of several ranks
+/// they are built on z-slabs of the grid's cells (docs/cfd-dem.md "Distributed CFD-DEM"): the grid, the fluid and
+/// the DEM each hold this rank's slab, and every step is collective; on one rank the whole grid, as before.
 class CfdDemSolvers {
  public:
-  explicit CfdDemSolvers(CfdDemSetup setup);
+  explicit CfdDemSolvers(CfdDemSetup setup, MPI_Comm comm = MPI_COMM_SELF);
   CfdDemSolvers(const CfdDemSolvers&) = delete;
   CfdDemSolvers& operator=(const CfdDemSolvers&) = delete;
 
@@ -51,9 +56,15 @@ class CfdDemSolvers {
   [[nodiscard]] CfdDemCoupling& coupling() { return *coupling_; }
   [[nodiscard]] const CfdDemCoupling& coupling() const { return *coupling_; }
   [[nodiscard]] const CouplingSettings& coupling_settings() const { return coupling_settings_; }
+  [[nodiscard]] MPI_Comm comm() const { return comm_; }
+  /// This rank's slab of the DEM (null on one rank).
+  [[nodiscard]] const DemSlabs* slabs() const { return dem_slabs_.get(); }
 
  private:
   std::shared_ptr<const hs::common::Shape> shape_;
+  MPI_Comm comm_;
+  std::unique_ptr<hs::common::CartesianDecomposition> decomposition_;   // several ranks: z-slabs of the cells
+  std::unique_ptr<DemSlabs> dem_slabs_;
   std::unique_ptr<FvmGrid> grid_;
   std::unique_ptr<DemSystem> dem_;
   std::unique_ptr<FvmSolver> fluid_;

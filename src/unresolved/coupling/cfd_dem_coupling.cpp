@@ -179,6 +179,7 @@ void CfdDemCoupling::particle_forces() {
     rows.resize(n);
     std::iota(rows.begin(), rows.end(), std::size_t{0});
   } else {
+    if (correct) lift_before_ = out.lift_force_N;   // the correction reads the last step's lift
     for (ParticleStore::Column* column : columns) std::fill(column->begin(), column->end(), 0.0);
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (map_.centred_here(i)) rows.push_back(i);
@@ -247,7 +248,8 @@ bool CfdDemCoupling::sample_fluid_at(std::size_t i, bool correct, const std::vec
   if (correct) {
     // What this sphere gave the fluid in the step just made: minus its drag impulse per time, minus its lift.
     const Vec3 j{p.drag_impulse_N_s()[0][i], p.drag_impulse_N_s()[1][i], p.drag_impulse_N_s()[2][i]};
-    const Vec3 lift_before{lift_col[0][i], lift_col[1][i], lift_col[2][i]};
+    const auto& before = slabs_ != nullptr ? lift_before_ : lift_col;   // on slabs the columns were cleared
+    const Vec3 lift_before{before[0][i], before[1][i], before[2][i]};
     // M is measured in plasma; a suspension viscosity mu_plasma f(eps) at the sphere scales it by 1 / f (a Stokes
     // flow's response is inversely proportional to the viscosity, and the smoothed force sits within ~l of the
     // sphere, where f is the local one: an approximation where f varies over l, e.g. at the cell-free layer).

@@ -229,6 +229,7 @@ class CfdDemCoupling {
   std::unique_ptr<FvmGrid> whole_grid_;   // on slabs, for the self-mobility tables (self_induced_correction)
   BlockField<hs::common::Vec3> buoyancy_density_;   // buoyancy_over_footprint: -grad p + div tau at cell centres, N/m^3
   std::array<ParticleStore::Column, 3> footprint_sum_;   // per store row: its sum over the markers, N/m^3
+  ParticleStore::Vec3Columns lift_before_;   // on slabs: the last step's lift while the sampled columns are cleared
 };
 
 }  // namespace hs::unresolved

@@ -39,17 +39,8 @@ Vec3 unit(int a) {
 FvmGrid::FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec,
                  const hs::common::CartesianDecomposition* slabs)
     : shape_(shape), spec_(spec), slabs_(slabs), dx_m_(spec.dx_m), lo_(spec.box_m.lo) {
-  if (!(dx_m_ > 0.0)) throw hs::common::ConfigError(fmt::format("FVM grid: dx_m = {} must be > 0", dx_m_));
+  n_ = cells_of(spec);
   for (int a = 0; a < 3; ++a) {
-    const double extent = spec.box_m.hi[a] - spec.box_m.lo[a];
-    const double cells = extent / dx_m_;
-    const long n = std::lround(cells);
-    if (n < 1 || std::abs(cells - static_cast<double>(n)) > 1e-6 * std::max(1.0, cells)) {
-      throw hs::common::ConfigError(fmt::format(
-          "FVM grid: the domain extent along axis {} ({} m) is not a whole number of cells of {} m ({:.6f} cells)",
-          "xyz"[a], extent, dx_m_, cells));
-    }
-    n_[static_cast<std::size_t>(a)] = static_cast<int>(n);
     const bool lo_p = side(a, 0).type == SideType::periodic;
     const bool hi_p = side(a, 1).type == SideType::periodic;
     if (lo_p != hi_p) {
@@ -107,6 +98,23 @@ int FvmGrid::box_face(int c, int along) const {
     return -1;
   }
   return along == 0 ? 0 : along == n ? 1 : -1;
+}
+
+std::array<int, 3> FvmGrid::cells_of(const FvmGridSpec& spec) {
+  if (!(spec.dx_m > 0.0)) throw hs::common::ConfigError(fmt::format("FVM grid: dx_m = {} must be > 0", spec.dx_m));
+  std::array<int, 3> n{};
+  for (int a = 0; a < 3; ++a) {
+    const double extent = spec.box_m.hi[a] - spec.box_m.lo[a];
+    const double cells = extent / spec.dx_m;
+    const long count = std::lround(cells);
+    if (count < 1 || std::abs(cells - static_cast<double>(count)) > 1e-6 * std::max(1.0, cells)) {
+      throw hs::common::ConfigError(fmt::format(
+          "FVM grid: the domain extent along axis {} ({} m) is not a whole number of cells of {} m ({:.6f} cells)",
+          "xyz"[a], extent, spec.dx_m, cells));
+    }
+    n[static_cast<std::size_t>(a)] = static_cast<int>(count);
+  }
+  return n;
 }
 
 Vec3 FvmGrid::cell_centre_m(int i, int j, int k) const {

@@ -85,6 +85,9 @@ class FvmGrid {
   FvmGrid(const hs::common::Shape& shape, const FvmGridSpec& spec,
           const hs::common::CartesianDecomposition* slabs = nullptr);
 
+  /// The whole grid's cells along each axis; ConfigError when the box is not a whole number of cells.
+  [[nodiscard]] static std::array<int, 3> cells_of(const FvmGridSpec& spec);
+
   [[nodiscard]] double dx_m() const { return dx_m_; }
   [[nodiscard]] const std::array<int, 3>& cells() const { return n_; }
   /// The whole grid's cells and the global index of this block's first plane along z (cells() and 0 without slabs).
