@@ -17,7 +17,10 @@ double FvmSolver::interpolate(int c, const BlockField<double>& field, const Vec3
   for (int a = 0; a < 3; ++a) {
     const int n = grid_.cells()[static_cast<std::size_t>(a)];
     double s = (x[a] - grid_.origin_m()[a]) / h_ - (a == c ? 0.0 : 0.5);
-    s = std::clamp(s, -1.0, static_cast<double>(n));
+    // A block's face field along z reaches the next block's second face (ghost plane n + 1): a point within half a
+    // cell above the block (a velocity gradient's stencil) interpolates up to it instead of stopping at face n.
+    const bool next_block = a == c && a == 2 && grid_.slabs() != nullptr && !grid_.slabs()->on_global_face(2, 1);
+    s = std::clamp(s, -1.0, static_cast<double>(next_block ? n + 1 : n));
     const int lo = std::min(static_cast<int>(std::floor(s)), n);
     i0[static_cast<std::size_t>(a)] = lo;
     w[static_cast<std::size_t>(a)] = std::clamp(s - lo, 0.0, 1.0);

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The committed tube-pries case on z-slabs (issue #28's acceptance) against one rank: its grid, cells, learned drag
-// and coupling (suspension viscosity, smoothing, footprint buoyancy, self-induced correction), 100 coupled steps on
-// the CFD-DEM skeleton's solvers. Run at np 1, 2 and 4 (oversubscribed). Without its learned lift and DI closures:
-// with them the ranks part by far more than round-off (open, docs/cfd-dem.md "Distributed CFD-DEM").
+// The committed tube-pries case on z-slabs (issue #28's acceptance) against one rank: its grid, cells, learned
+// closures and coupling (suspension viscosity, smoothing, footprint buoyancy, self-induced correction), 100 coupled
+// steps on the CFD-DEM skeleton's solvers. Run at np 1, 2 and 4 (oversubscribed).
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -27,14 +26,7 @@ constexpr int kSteps = 100;
 TubePriesConfig committed_case() {
   auto file = hs::common::ConfigFile::load(std::filesystem::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries/case.toml");
   (void)file->root().section("case").string("type");   // read as the CLI reads it
-  TubePriesConfig c = parse_tube_pries(*file, false);
-  // Measured with them on (np 2, 100 steps): the case's full coupling 2.5e-5 d (6e-11 of Q_blood at step 3, where
-  // without them the ranks agree to 1e-16); the DI closure without the lift 4.8e-8 d; the lift without smoothing
-  // 1.2e-1 d. On one slab through the same distributed code paths they agree to 4e-15 d. Not yet explained: off
-  // here until it is.
-  c.lift = {.model = "none", .file = {}};
-  c.deformation = {.model = "none", .file = {}};
-  return c;
+  return parse_tube_pries(*file, false);
 }
 
 /// The case's solvers with every solve at 1e-12: the AMG preconditioner differs per rank, so the runs agree to

@@ -239,5 +239,59 @@ TEST(FvmGridSlabs, TheSolverOnBlocksFollowsTheWholeGrid) {
   }
 }
 
+
+TEST(FvmGridSlabs, SamplingNearBlockFacesIsTheWholeGrids) {
+  // What the coupling reads at a particle (velocity, its gradient, the pressure gradient, the viscous force density)
+  // at points within half a cell of this block's faces, inside it, against the whole grid after 20 steps of the
+  // periodic tube at solver tolerance 1e-12 (fields within 1e-9 of each other, FvmGridSlabs test above): the same to
+  // that band, relative to each quantity's largest magnitude over the points.
+  const WholeAndBlock grids(false);
+  const FluidProperties plasma{.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6};
+  const PisoSettings piso{.dt_s = 1e-5, .pressure = {.tolerance = 1e-12, .rel_tol = 0.0, .max_iterations = 1000},
+                          .momentum_tolerance = 1e-12};
+  const FlowDrive drive{.mode = FlowDrive::Mode::flow_rate, .axis = 2,
+                        .flow_rate_m3_s = std::numbers::pi * kRadius * kRadius * 1e-3};
+  FvmSolver whole(grids.whole, plasma, piso, drive, MPI_COMM_SELF);
+  FvmSolver block(grids.block, plasma, piso, drive, MPI_COMM_WORLD);
+  for (int s = 0; s < 20; ++s) {
+    whole.step();
+    block.step();
+  }
+  const double h = grids.whole.dx_m();
+  const double lo = grids.block.origin_m().z;
+  const double hi = lo + grids.block.cells()[2] * h;
+  std::array<double, 4> worst{}, scale{};
+  for (const double z : {lo, lo + 0.25 * h, lo + 0.49 * h, lo + 0.5 * h, hi - 0.5 * h, hi - 0.49 * h, hi - 0.25 * h,
+                         hi - 1e-3 * h}) {
+    for (int q = 0; q < 9; ++q) {   // across the tube's section
+      const hs::common::Vec3 x{(q % 3 - 1) * 0.3 * kRadius + kStart.x, (q / 3 - 1) * 0.3 * kRadius + kStart.y, z};
+      const auto gb = block.velocity_gradient_at(x);
+      const auto gw = whole.velocity_gradient_at(x);
+      double dg = 0.0, sg = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        dg = std::max(dg, norm(gb[static_cast<std::size_t>(a)] - gw[static_cast<std::size_t>(a)]));
+        sg = std::max(sg, norm(gw[static_cast<std::size_t>(a)]));
+      }
+      const std::array<double, 4> d{norm(block.velocity_at(x) - whole.velocity_at(x)), dg,
+                                    norm(block.pressure_gradient_at(x) - whole.pressure_gradient_at(x)),
+                                    norm(block.viscous_force_density_at(x) - whole.viscous_force_density_at(x))};
+      const std::array<double, 4> m{norm(whole.velocity_at(x)), sg, norm(whole.pressure_gradient_at(x)),
+                                    norm(whole.viscous_force_density_at(x))};
+      for (std::size_t k = 0; k < 4; ++k) {
+        worst[k] = std::max(worst[k], d[k]);
+        scale[k] = std::max(scale[k], m[k]);
+      }
+    }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, worst.data(), 4, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const char* names[] = {"velocity", "velocity gradient", "pressure gradient", "viscous force density"};
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (rank == 0) std::printf("near block faces: %s differs by %.3g of its largest value\n", names[k], worst[k] / scale[k]);
+    EXPECT_LE(worst[k], 1e-9 * scale[k]) << names[k];
+  }
+}
+
 }  // namespace
 }  // namespace hs::unresolved
