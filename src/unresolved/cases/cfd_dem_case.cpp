@@ -13,6 +13,12 @@
 namespace hs::unresolved {
 namespace {
 
+int ranks_of(MPI_Comm comm) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  return ranks;
+}
+
 void write_checkpoint(const CfdDemSolvers& run, const CfdDemMeasurement& m, const std::vector<std::vector<double>>& rows,
                       const CfdDemRestart& restart) {
   hs::common::Checkpoint cp;
@@ -23,13 +29,27 @@ void write_checkpoint(const CfdDemSolvers& run, const CfdDemMeasurement& m, cons
   m.write_state(cp);
   cp.meta()["case_type"] = m.case_type();
   cp.meta()["step"] = run.coupling().steps();
+  cp.meta()["ranks"] = ranks_of(run.comm());
+  cp.meta()["first_plane"] = run.grid().first_plane();
   cp.write(restart.dir, restart.rank);
 }
 
 std::vector<std::vector<double>> read_checkpoint(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDemRestart& restart) {
+  const int ranks = ranks_of(run.comm());
+  if (!hs::common::Checkpoint::exists(restart.dir, restart.rank) && hs::common::Checkpoint::exists(restart.dir, 0)) {
+    throw hs::common::ConfigError(fmt::format("{}: this checkpoint has no file for rank {}; it was written on fewer "
+                                              "ranks (see rank 0's message)", restart.dir.string(), restart.rank));
+  }
   const hs::common::Checkpoint cp = hs::common::Checkpoint::read(restart.dir, restart.rank);
   if (cp.meta().value("case_type", "") != m.case_type()) {
     throw hs::common::ConfigError(fmt::format("{}: not a {} checkpoint", restart.dir.string(), m.case_type()));
+  }
+  // Each rank saved its slab: the run resumes on as many ranks as wrote it (one file each, same slabs).
+  const int saved_ranks = cp.meta().value("ranks", 1);
+  if (saved_ranks != ranks || cp.meta().value("first_plane", 0) != run.grid().first_plane()) {
+    throw hs::common::ConfigError(fmt::format("{}: checkpoint written on {} MPI rank(s), this run has {}; resume with "
+                                              "mpirun -np {} (a run's slabs cannot be redistributed)",
+                                              restart.dir.string(), saved_ranks, ranks, saved_ranks));
   }
   run.coupling().read_state(cp);
   const std::vector<double>& series = cp.doubles("series");
@@ -44,6 +64,14 @@ std::vector<std::vector<double>> read_checkpoint(CfdDemSolvers& run, CfdDemMeasu
     rows.emplace_back(series.begin() + static_cast<long>(k), series.begin() + static_cast<long>(k + width));
   }
   return rows;
+}
+
+/// Whether any rank says yes: a checkpoint or a stop is decided by all ranks together, so that every slab's file
+/// holds the same step (each rank's wall clock and signals are its own).
+bool on_any_rank(bool mine, MPI_Comm comm) {
+  int any = mine ? 1 : 0;
+  if (ranks_of(comm) > 1) MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, comm);
+  return any != 0;
 }
 
 /// The groups every CFD-DEM run has: n_coupling and the viscous number nu dt / dx^2 (PISO's stability measure,
@@ -114,14 +142,16 @@ CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDem
   while (!finished && loop.step() < loop.end_step()) {
     loop.run_steps(1);
     show(out.rows.back());
-    if (const int signal = hs::common::stop_signal()) {
+    int signal = hs::common::stop_signal();
+    if (ranks_of(run.comm()) > 1) MPI_Allreduce(MPI_IN_PLACE, &signal, 1, MPI_INT, MPI_MAX, run.comm());
+    if (signal != 0) {
       if (!restart.dir.empty()) write_checkpoint(run, m, out.rows, restart);
       throw hs::common::RunInterrupted(fmt::format("stopped by signal {} at step {} of {}{}", signal, coupling.steps(),
                                                    options.steps,
                                                    restart.dir.empty() ? "" : "; checkpoint written, continue with --resume"),
                                        signal);
     }
-    if (!restart.dir.empty() && schedule.due()) write_checkpoint(run, m, out.rows, restart);
+    if (!restart.dir.empty() && on_any_rank(schedule.due(), run.comm())) write_checkpoint(run, m, out.rows, restart);
   }
   if (!restart.dir.empty()) write_checkpoint(run, m, out.rows, restart);
   out.summary = m.summary(run, out.rows);

@@ -16,7 +16,7 @@ CfdDemOutcome run_cfd_dem_in_folder(hs::common::RunContext& ctx, CfdDemSolvers& 
   std::unique_ptr<hs::common::CsvWriter> series;
   if (ctx.rank() == 0) series = std::make_unique<hs::common::CsvWriter>(ctx.folder().file("timeseries.csv"), m.columns());
   hs::common::Progress progress(m.case_type(), options.steps, ctx.show_progress());
-  // ParaView output, rank 0 only: particles.pvd + fields.pvd with vtk/ frames named by CFD step.
+  // ParaView output, written by rank 0: particles.pvd + fields.pvd with vtk/ frames named by CFD step.
   CfdDemFrames frames(ctx.rank() == 0 ? ctx.folder().path() : std::filesystem::path{}, options.vtk_every_s);
   if (ctx.resuming()) ctx.log().info("resuming from the checkpoint in {}", ctx.folder().checkpoint_dir().string());
   const CfdDemOutcome out = run_cfd_dem(
@@ -27,7 +27,7 @@ CfdDemOutcome run_cfd_dem_in_folder(hs::common::RunContext& ctx, CfdDemSolvers& 
        .on_row = [&](const std::vector<double>& row) {
          if (series) series->row(row);
        },
-       .after_step = [&](const CfdDemSolvers& s, long step, bool last) { frames.after_step(s.fluid(), s.dem(), step, last); },
+       .after_step = [&](const CfdDemSolvers& s, long step, bool last) { frames.after_step(s, step, last); },
        .progress = &progress});
   progress.finish();
   ctx.log().info("{}: {:.3f} s before the loop (the case's prepare), wall seconds per stage of the CFD-DEM step:\n{}",

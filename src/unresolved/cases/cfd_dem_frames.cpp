@@ -1,17 +1,89 @@
 // SPDX-License-Identifier: MIT
-// ParaView frames of a CFD-DEM run (particles .vtp, fluid cells .vti, each in a .pvd series).
+// ParaView frames of a CFD-DEM run (particles .vtp, fluid cells .vti, each in a .pvd series), gathered from the
+// slabs when the run is distributed.
 #include "unresolved/cases/cfd_dem_frames.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include "common/io/vtk_image.hpp"
 #include "unresolved/dem/particle_output.hpp"
 
 namespace hs::unresolved {
+namespace {
+
+int rank_of(MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank;
+}
+
+/// Every rank's values on rank 0, rank after rank, with each rank's count (both empty on the other ranks).
+struct Gathered {
+  std::vector<double> values;
+  std::vector<int> counts;
+};
+
+Gathered gathered(const std::vector<double>& mine, MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  if (size == 1) return {mine, {static_cast<int>(mine.size())}};
+  const int count = static_cast<int>(mine.size());
+  const bool root = rank_of(comm) == 0;
+  std::vector<int> counts(root ? static_cast<std::size_t>(size) : 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  std::vector<int> displs(counts.size(), 0);
+  if (root) std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
+  std::vector<double> all(root ? static_cast<std::size_t>(displs.back() + counts.back()) : 0);
+  MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
+  return {std::move(all), std::move(counts)};
+}
+
+/// The owned particles of every rank on rank 0, in id order, so that a frame is the same file on any rank count.
+ParticleStore particles_in_id_order(const ParticleStore& mine, MPI_Comm comm) {
+  ParticleStore copy = mine;   // pack_owned() reads through ParticleStore's non-const column visitor
+  const std::size_t width = copy.packed_size();
+  std::vector<double> packed;
+  packed.reserve(width * copy.n_owned());
+  for (std::size_t i = 0; i < copy.n_owned(); ++i) copy.pack_owned(i, packed);
+  const std::vector<double> all = gathered(packed, comm).values;
+  ParticleStore out;
+  for (std::size_t at = 0; at + width <= all.size(); at += width) out.add_packed(all.data() + at);
+  if (mine.drag_used()) (void)out.drag_coefficient_N_s_m();   // the drag column is written where the run has one
+  std::vector<std::size_t> order(out.n_owned());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return out.id()[a] < out.id()[b]; });
+  out.permute_owned(order);
+  return out;
+}
+
+/// A cell field of the block (x fastest, z slowest, `components` values per cell) as the whole grid's on rank 0:
+/// each slab's planes where its first plane is (empty on the other ranks; `mine` itself without slabs).
+std::vector<double> whole_grid(const std::vector<double>& mine, const FvmGrid& g, int components, MPI_Comm comm) {
+  if (g.slabs() == nullptr) return mine;
+  const Gathered all = gathered(mine, comm);
+  const std::vector<double> firsts = gathered({static_cast<double>(g.first_plane())}, comm).values;
+  if (all.counts.empty()) return {};
+  const auto& n = g.global_cells();
+  const std::size_t per_plane = static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(n[1]) * static_cast<std::size_t>(components);
+  std::vector<double> whole(per_plane * static_cast<std::size_t>(n[2]));
+  std::size_t from = 0;
+  for (std::size_t r = 0; r < all.counts.size(); ++r) {
+    const auto count = static_cast<std::size_t>(all.counts[r]);
+    std::copy_n(all.values.begin() + static_cast<long>(from), count,
+                whole.begin() + static_cast<long>(static_cast<std::size_t>(firsts[r]) * per_plane));
+    from += count;
+  }
+  return whole;
+}
+
+}  // namespace
 
 CfdDemFrames::CfdDemFrames(const std::filesystem::path& folder, double every_s) : folder_(folder), every_s_(every_s) {
   if (folder_.empty()) return;
@@ -20,20 +92,28 @@ CfdDemFrames::CfdDemFrames(const std::filesystem::path& folder, double every_s) 
   fields_pvd_ = std::make_unique<hs::common::PvdSeries>(folder_ / "fields.pvd");
 }
 
-void CfdDemFrames::after_step(const FvmSolver& fluid, const DemSystem& dem, long step, bool final_step) {
-  if (folder_.empty()) return;
-  // Due when the step crossed a multiple of every_s; stateless, so a resumed run keeps the same frame times.
+void CfdDemFrames::after_step(const CfdDemSolvers& run, long step, bool final_step) {
+  if (folder_.empty() && run.slabs() == nullptr) return;   // nothing to write and no one to gather with
+  const FvmSolver& fluid = run.fluid();
+  // Due when the step crossed a multiple of every_s; stateless, so a resumed run keeps the same frame times (and
+  // every rank, on the same simulated time, agrees).
   const auto slot = [&](double t_s) { return static_cast<long>(std::floor(t_s / every_s_ + 1e-9)); };
   const bool due = every_s_ > 0.0 && slot(fluid.time_s()) > slot(fluid.time_s() - fluid.settings().dt_s);
   if (!due && !final_step) return;
-  write(fluid, dem, step);
+  write(run, step);
 }
 
-void CfdDemFrames::write(const FvmSolver& fluid, const DemSystem& dem, long step) {
+void CfdDemFrames::write(const CfdDemSolvers& run, long step) {
+  const MPI_Comm comm = run.comm();
+  const bool root = rank_of(comm) == 0 && !folder_.empty();
+  const FvmSolver& fluid = run.fluid();
   const double t = fluid.time_s();
-  const std::string pname = fmt::format("particles_{:07d}.vtp", step);
-  write_particles_vtp(dem.particles(), folder_ / "vtk" / pname);
-  particles_pvd_->add(t, "vtk/" + pname);
+  const ParticleStore particles = particles_in_id_order(run.dem().particles(), comm);
+  if (root) {
+    const std::string pname = fmt::format("particles_{:07d}.vtp", step);
+    write_particles_vtp(particles, folder_ / "vtk" / pname);
+    particles_pvd_->add(t, "vtk/" + pname);
+  }
   // Cell centres as image points: velocity (cell mean of the faces), pressure (with the driving gradient),
   // void fraction eps and the local hematocrit 1 - eps.
   const FvmGrid& g = fluid.grid();
@@ -55,9 +135,14 @@ void CfdDemFrames::write(const FvmSolver& fluid, const DemSystem& dem, long step
       }
     }
   }
+  u = whole_grid(u, g, 3, comm);
+  p = whole_grid(p, g, 1, comm);
+  eps = whole_grid(eps, g, 1, comm);
+  ht = whole_grid(ht, g, 1, comm);
+  if (!root) return;
   const double dx = g.dx_m();
-  const hs::common::Vec3 o = g.origin_m();
-  hs::common::VtkImage image(n, {o.x + 0.5 * dx, o.y + 0.5 * dx, o.z + 0.5 * dx}, dx);
+  const hs::common::Vec3 o = g.box_m().lo;
+  hs::common::VtkImage image(g.global_cells(), {o.x + 0.5 * dx, o.y + 0.5 * dx, o.z + 0.5 * dx}, dx);
   image.add_vector("velocity_m_s", u);
   image.add_scalar("pressure_Pa", p, true);
   image.add_scalar("void_fraction", eps);

@@ -38,6 +38,13 @@ double rbc_flow_rate(const CfdDemSolvers& run, double length_m) {
   return sum / length_m;   // the mean over the periodic length of the flux through a cross-section
 }
 
+/// A count of this rank's (the last DEM sub-step's contacts), summed over the slabs.
+long over_ranks(std::size_t mine, const CfdDemSolvers& run) {
+  auto sum = static_cast<long>(mine);
+  if (run.slabs() != nullptr) MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_LONG, MPI_SUM, run.comm());
+  return sum;
+}
+
 /// Means over the last (1 - from_fraction) of the series, Ht_d of that window's two halves, and the least-squares
 /// trends of Ht_d and of mu_rel = Q_plasma / Q_blood over the window (steadiness).
 struct SeriesAverages {
@@ -227,8 +234,8 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
   // How crowded the cells are at the end (the last DEM sub-step's counts): collisions are what can move force-free,
   // lift-free spheres across streamlines (shear-induced migration), so a Fahraeus ratio above the no-migration one
   // without a lift is read beside them.
-  res["pair_contacts_at_end"] = static_cast<long>(run.dem().stats().pair_contacts);
-  res["wall_contacts_at_end"] = static_cast<long>(run.dem().stats().wall_contacts);
+  res["pair_contacts_at_end"] = over_ranks(run.dem().stats().pair_contacts, run);
+  res["wall_contacts_at_end"] = over_ranks(run.dem().stats().wall_contacts, run);
   write_model_summary(c_.coupling_model(), num);
   num["pressure_coupling"] = c_.pressure_coupling == PressureCoupling::piso ? "piso" : "projection";
   num["piso_correctors"] = c_.piso_correctors;
@@ -249,7 +256,7 @@ TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::functio
                             .after_step = {},
                             .progress = progress};
   if (frames != nullptr) {
-    options.after_step = [frames](const CfdDemSolvers& s, long step, bool last) { frames->after_step(s.fluid(), s.dem(), step, last); };
+    options.after_step = [frames](const CfdDemSolvers& s, long step, bool last) { frames->after_step(s, step, last); };
   }
   const CfdDemOutcome out = run_cfd_dem(run, m, options);
   return tube_pries_result(out.summary);
