@@ -1,32 +1,42 @@
 // SPDX-License-Identifier: MIT
 // `hemoscale bench cfddem`: RBC spheres at Ht 0.10 in a periodic 100 um tube whose length holds N cells; median
-// wall time of a coupled CFD step (n_coupling DEM steps + coupling + PISO) and the process's peak RSS. Then the open
-// tube (cfddem_open_tube.cpp) at 1e4 and 1e5 cells, each in a child process, under the key "open_tube".
+// wall time of a coupled CFD step (n_coupling DEM steps + coupling + PISO) and the peak RSS. On N MPI ranks the tube
+// is on z-slabs (the case skeleton's CfdDemSolvers) and the keys end in "_npN". On one rank, the same sizes again on
+// two ranks (a child job: strong and weak scaling), then the open tube (cfddem_open_tube.cpp) at 1e4 and 1e5 cells,
+// each in a child process, under the key "open_tube".
 // HS_BENCH_CFDDEM_ARCHIVE=FILE (a JSON this bench wrote) takes the periodic sizes FILE holds from it instead of
 // measuring them (a 1e6 size measured alone, at a quiet hour, completes a run; the failure-path test judges a
 // committed full run this way).
 #include "bench/cfddem_bench.hpp"
 #include "bench/bench_targets.hpp"
+#include "bench/clean_child.hpp"
 #include "bench/cfddem_open_tube.hpp"
 #include "bench/peak_rss.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <mpi.h>
 #include <nlohmann/json.hpp>
+#include <omp.h>
 
 #include "closures/register_builtin.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
 #include "common/run_folder.hpp"
-#include "unresolved/coupling/cfd_dem_coupling.hpp"
+#include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
@@ -44,8 +54,9 @@ constexpr const char* periodic_sizes_env = "HS_BENCH_CFDDEM_SIZES";
 constexpr const char* archive_env = "HS_BENCH_CFDDEM_ARCHIVE";
 
 struct Measured {
-  double s_per_cfd_step;
-  double peak_rss_gib;
+  double s_per_cfd_step;                // median over the timed steps of the slowest rank's time
+  double peak_rss_gib;                  // summed over the ranks (the job's memory)
+  double peak_rss_gib_per_rank;         // the largest rank's
   int n_coupling;
   long cells;
   double mean_substeps;                 // DEM steps per timed CFD step (drag-limited: fewer than n_coupling)
@@ -57,19 +68,37 @@ struct Measured {
 // The coupling's four stages, as the case skeleton names them (docs/cfd-dem.md).
 const std::vector<std::string> stage_names{"dem_substeps", "particles_to_grid", "fluid_step", "fluid_to_particles"};
 
+/// The job's ranks (MPI_COMM_WORLD): the periodic tube on z-slabs, one per rank; rank 0 prints and writes.
+struct Ranks {
+  int rank = 0;
+  int size = 1;
+  [[nodiscard]] bool root() const { return rank == 0; }
+};
+
+Ranks world_ranks() {
+  Ranks r;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r.rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &r.size);
+  return r;
+}
+
+/// The largest of the ranks' values, element by element (a collective step takes as long as its slowest rank).
+std::vector<double> max_over_ranks(std::vector<double> v) {
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return v;
+}
+
 Measured measure(long n_rbc, int repetitions) {
   const double d_tube = 100e-6;
   const double r = 0.5 * d_tube;
   const double dx = d_tube / 10.0;   // the validation's 10 cells across the diameter
   const double ht = 0.10;
   const double length = dx * std::ceil(static_cast<double>(n_rbc) * rbc_volume_m3 / (ht * std::numbers::pi * r * r) / dx);
-  const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
+  const auto tube = std::make_shared<const hs::common::Tube>(
+      hs::common::TubeSpec{.start_m = {0, 0, 0}, .end_m = {0, 0, length}, .radius_m = r});
   FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, length}}, .dx_m = dx, .sides = {}};
   spec.sides[4].type = SideType::periodic;
   spec.sides[5].type = SideType::periodic;
-  const FvmGrid grid(tube, spec);
-  const FluidProperties plasma{.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6};
-  const double gradient = -8.0 * 1.23e-3 * 1e-3 / (r * r);   // plasma mean velocity 1 mm/s
   const double dt = 2e-4;
   ParticleParams params = default_particle_params();
   params.particle.youngs_modulus_Pa = 1e3;   // as the tube-pries case
@@ -77,14 +106,28 @@ Measured measure(long n_rbc, int repetitions) {
   const double limit = 0.1 * std::min(rayleigh_time_s(params), hertz_time_s(params, params.max_impact_velocity_m_s));
   const int n_coupling = static_cast<int>(std::ceil(dt / (0.9 * limit)));
   const Domain domain{.box = {{-r, -r, 0.0}, {r, r, length}}, .periodic = {false, false, true}};
-  const InsertionResult ins = insert_at_volume_fraction(tube, domain, {.volume_fraction = ht, .radius_m = params.radius_m(), .seed = 1});
-  DemSystem dem({.params = params, .domain = domain, .time_step_s = dt / n_coupling}, &tube);
-  for (const auto& x : ins.positions_m) dem.add_particle(x);
-  FvmSolver fluid(grid, plasma, {.dt_s = dt}, {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2, .pressure_gradient_Pa_m = gradient});
   CouplingClosures closures;
   closures.drag = hs::closures::make_drag_closure({.model = "schiller_naumann", .file = {}});
-  CfdDemCoupling coupling(fluid, dem, {.n_coupling = n_coupling, .void_fraction_rate = false, .tube_radius_m = r},
-                          std::move(closures));   // as the tube-pries case (see CouplingSettings)
+  CfdDemSetup setup{
+      .shape = tube,
+      .grid = spec,
+      .fluid = {.density_kg_m3 = 1025.0, .kinematic_viscosity_m2_s = 1.2e-6},
+      .piso = {.dt_s = dt},
+      .drive = {.mode = FlowDrive::Mode::pressure_gradient, .axis = 2,
+                .pressure_gradient_Pa_m = -8.0 * 1.23e-3 * 1e-3 / (r * r)},   // plasma mean velocity 1 mm/s
+      .dem = {.params = params, .domain = domain, .time_step_s = dt / n_coupling},
+      .coupling = {.n_coupling = n_coupling, .void_fraction_rate = false, .tube_radius_m = r},   // as the tube-pries case
+      .closures = std::move(closures)};
+  CfdDemSolvers run(std::move(setup), MPI_COMM_WORLD);
+  // Every rank draws the same cells and keeps those in its slab, with the ids one rank gives them (as tube-pries).
+  const InsertionResult ins = insert_at_volume_fraction(*tube, domain, {.volume_fraction = ht, .radius_m = params.radius_m(), .seed = 1});
+  for (std::size_t k = 0; k < ins.positions_m.size(); ++k) {
+    const hs::common::Vec3& x = ins.positions_m[k];
+    const DemSlabs* slabs = run.slabs();
+    if (slabs == nullptr || (x.z >= slabs->lo_m() && x.z < slabs->hi_m())) (void)run.dem().add_particle(x, {}, static_cast<std::int64_t>(k));
+  }
+  CfdDemCoupling& coupling = run.coupling();
+  FvmSolver& fluid = run.fluid();
   coupling.set_mean_velocity_m_s(1e-3);
   coupling.step();   // warm-up: list build, AMG set-up
   std::vector<double> times;
@@ -93,6 +136,7 @@ Measured measure(long n_rbc, int repetitions) {
   const long setups0 = fluid.pressure_solver().setups(), reuses0 = fluid.pressure_solver().reuses();
   using Clock = std::chrono::steady_clock;
   for (int k = 0; k < repetitions; ++k) {
+    MPI_Barrier(MPI_COMM_WORLD);   // every rank starts the step together: its time is the slowest rank's
     const auto t0 = Clock::now();
     auto t = t0;
     const auto lap = [&](std::size_t stage) {
@@ -111,8 +155,14 @@ Measured measure(long n_rbc, int repetitions) {
     times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
     substeps += coupling.last_substeps();
   }
+  times = max_over_ranks(times);
+  stages = max_over_ranks(stages);
   std::sort(times.begin(), times.end());
-  return {times[times.size() / 2], peak_rss_gib(), n_coupling, grid.cell_count(),
+  const std::array<int, 3> cells = FvmGrid::cells_of(spec);
+  double rss = peak_rss_gib(), rss_sum = 0.0, rss_max = 0.0;
+  MPI_Allreduce(&rss, &rss_sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return {times[times.size() / 2], rss_sum, rss_max, n_coupling, static_cast<long>(cells[0]) * cells[1] * cells[2],
           static_cast<double>(substeps) / repetitions, stages, fluid.pressure_solver().setups() - setups0,
           fluid.pressure_solver().reuses() - reuses0};
 }
@@ -139,7 +189,7 @@ nlohmann::json open_tube_sizes(bool quick) {
 /// An earlier run's JSON (HS_BENCH_CFDDEM_ARCHIVE), or null without the variable.
 nlohmann::json read_archive() {
   const char* file = std::getenv(archive_env);
-  if (file == nullptr) return nullptr;
+  if (file == nullptr || *file == '\0') return nullptr;
   std::ifstream in(file);
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (!in || j.is_discarded() || !j.is_object()) {
@@ -164,15 +214,95 @@ bool copy_archived_size(const nlohmann::json& archive, const std::string& key, n
   return true;
 }
 
+/// "cfddem_1e6", "cfddem_2e5": the key of a periodic size in the JSON.
+std::string size_key(long n) {
+  const int exponent = static_cast<int>(std::floor(std::log10(static_cast<double>(n)) + 1e-9));
+  const long mantissa = std::lround(static_cast<double>(n) / std::pow(10.0, exponent));
+  return fmt::format("cfddem_{}e{}", mantissa, exponent);
+}
+
+/// One periodic size on this job's ranks: printed by rank 0, its keys (suffixed "_npN" on N > 1 ranks) into j.
+void measure_size(long n, const Ranks& ranks, nlohmann::json& j) {
+  const Measured m = measure(n, 3);
+  const std::string key = size_key(n);
+  const std::string np = ranks.size > 1 ? fmt::format("_np{}", ranks.size) : "";
+  if (ranks.root()) {
+    fmt::print("  {:>8} RBCs{}: {:.3f} s per CFD step (median of 3, n_coupling = {}, {:.1f} DEM steps per CFD step, {} cells), "
+               "peak RSS {:.2f} GiB{}; stages (s, 3 steps):", n, ranks.size > 1 ? fmt::format(" on {} ranks", ranks.size) : "",
+               m.s_per_cfd_step, m.n_coupling, m.mean_substeps, m.cells, m.peak_rss_gib,
+               ranks.size > 1 ? fmt::format(" ({:.2f} the largest rank)", m.peak_rss_gib_per_rank) : "");
+    for (std::size_t s = 0; s < stage_names.size(); ++s) fmt::print(" {} {:.3f}", stage_names[s], m.stage_seconds[s]);
+    fmt::print("; AMG set-ups {} reuses {}\n", m.amg_setups, m.amg_reuses);
+    std::fflush(stdout);
+  }
+  j[key + "_s_per_cfd_step" + np] = m.s_per_cfd_step;
+  j[key + "_peak_rss_GiB" + np] = m.peak_rss_gib;
+  if (ranks.size > 1) j[key + "_peak_rss_GiB_per_rank" + np] = m.peak_rss_gib_per_rank;
+  j[key + "_dem_steps_per_cfd_step" + np] = m.mean_substeps;
+  for (std::size_t s = 0; s < stage_names.size(); ++s) j[key + "_stage_s" + np][stage_names[s]] = m.stage_seconds[s];
+  j[key + "_amg_setups" + np] = m.amg_setups;
+  j[key + "_amg_reuses" + np] = m.amg_reuses;
+}
+
+/// The sizes measured here on one rank again on two (`mpiexec -n 2` of this executable, only those sizes, its
+/// "_np2" keys merged into j), and each size below 1e6 doubled on two ranks: strong scaling (the same tube,
+/// t1 / (2 t2)) and weak scaling (twice the tube on twice the ranks, t1(N) / t2(2N)); 1e6 has no weak partner (2e6
+/// cells, ~5 GiB and minutes per step). A failed child is reported and leaves the keys out.
+void scale_to_two_ranks(const std::vector<long>& measured, nlohmann::json& j) {
+  std::vector<long> sizes = measured;
+  for (const long n : measured) {
+    if (n < 1000000) sizes.push_back(2 * n);
+  }
+  std::sort(sizes.begin(), sizes.end());
+  std::string list;
+  for (const long n : sizes) list += fmt::format("{}{}", list.empty() ? "" : ",", n);
+  fmt::print("cfddem on 2 ranks (z-slabs; mpiexec -n 2, a job of its own, {} thread(s) per rank): {} RBCs\n",
+             std::max(1, omp_get_max_threads() / 2), list);
+  std::fflush(stdout);
+  const auto file = std::filesystem::temp_directory_path() / fmt::format("hs_bench_cfddem_np2_{}.json", ::getpid());
+  std::vector<std::string> argv{HS_MPIEXEC, "-n", "2", "--oversubscribe"};
+  if (::geteuid() == 0) argv.emplace_back("--allow-run-as-root");   // containers run as root; mpiexec refuses it otherwise
+  argv.insert(argv.end(), {this_executable(), "bench", "cfddem", "--json", file.string()});
+  // The same cores as this run: its threads shared between the two ranks (strong scaling of the whole machine).
+  const int threads_per_rank = std::max(1, omp_get_max_threads() / 2);
+  j["threads_per_rank_np2"] = threads_per_rank;
+  j["threads_np1"] = omp_get_max_threads();
+  if (!run_clean_child(argv, {fmt::format("{}={}", periodic_sizes_env, list), fmt::format("{}=", archive_env),
+                              fmt::format("OMP_NUM_THREADS={}", threads_per_rank)})) {
+    fmt::print("  the 2-rank run failed: no np2 keys\n");
+    j["np2_failed"] = true;
+    return;
+  }
+  const nlohmann::json two = nlohmann::json::parse(std::ifstream(file));
+  std::filesystem::remove(file);
+  for (const auto& [name, value] : two.items()) {
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, "_np2") == 0) j[name] = value;
+  }
+  for (const long n : measured) {
+    const std::string key = size_key(n);
+    const double t1 = j[key + "_s_per_cfd_step"].get<double>();
+    const double strong = t1 / (2.0 * j[key + "_s_per_cfd_step_np2"].get<double>());
+    j[key + "_strong_efficiency_np2"] = strong;
+    fmt::print("  {:>8} RBCs: strong-scaling efficiency on 2 ranks {:.2f} (speed-up {:.2f})", n, strong, 2.0 * strong);
+    if (n < 1000000) {
+      const double weak = t1 / j[size_key(2 * n) + "_s_per_cfd_step_np2"].get<double>();
+      j[key + "_weak_efficiency_np2"] = weak;
+      fmt::print(", weak-scaling efficiency {:.2f} ({} RBCs on 2 ranks)", weak, 2 * n);
+    }
+    fmt::print("\n");
+  }
+}
+
 }  // namespace
 
 int run_cfddem_bench(const hs::common::TaskOptions& options) {
-  hs::unresolved::require_one_rank("bench cfddem");
   if (const char* cells = std::getenv(open_tube_child_env)) {   // a child of open_tube_sizes(): one size only
+    hs::unresolved::require_one_rank("bench cfddem (open tube)");
     const nlohmann::json m = measure_open_tube(std::stol(cells), open_tube_repetitions);
     if (options.json_file) hs::common::write_json(*options.json_file, m);
     return 0;
   }
+  const Ranks ranks = world_ranks();
   std::vector<long> sizes = options.quick ? std::vector<long>{10000} : std::vector<long>{10000, 100000, 1000000};
   const char* only = std::getenv(periodic_sizes_env);   // development: these periodic sizes only, no open tube
   if (only != nullptr) {
@@ -183,31 +313,34 @@ int run_cfddem_bench(const hs::common::TaskOptions& options) {
       rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
     }
   }
-  const nlohmann::json archive = read_archive();
+  const nlohmann::json archive = ranks.size == 1 ? read_archive() : nlohmann::json(nullptr);
   nlohmann::json j;
   if (!archive.is_null()) j["archive"] = archive["file"];
-  fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s\n");
-  for (const long n : sizes) {
-    const std::string key = fmt::format("cfddem_1e{}", static_cast<int>(std::lround(std::log10(static_cast<double>(n)))));
-    if (copy_archived_size(archive, key, j)) continue;
-    const Measured m = measure(n, 3);
-    fmt::print("  {:>8} RBCs: {:.3f} s per CFD step (median of 3, n_coupling = {}, {:.1f} DEM steps per CFD step, {} cells), "
-               "peak RSS {:.2f} GiB; stages (s, 3 steps):", n, m.s_per_cfd_step, m.n_coupling, m.mean_substeps, m.cells, m.peak_rss_gib);
-    for (std::size_t s = 0; s < stage_names.size(); ++s) fmt::print(" {} {:.3f}", stage_names[s], m.stage_seconds[s]);
-    fmt::print("; AMG set-ups {} reuses {}\n", m.amg_setups, m.amg_reuses);
-    j[key + "_s_per_cfd_step"] = m.s_per_cfd_step;
-    j[key + "_peak_rss_GiB"] = m.peak_rss_gib;
-    j[key + "_dem_steps_per_cfd_step"] = m.mean_substeps;
-    for (std::size_t s = 0; s < stage_names.size(); ++s) j[key + "_stage_s"][stage_names[s]] = m.stage_seconds[s];
-    j[key + "_amg_setups"] = m.amg_setups;
-    j[key + "_amg_reuses"] = m.amg_reuses;
+  j["mpi_ranks"] = ranks.size;
+  if (ranks.root()) {
+    fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s{}\n",
+               ranks.size > 1 ? fmt::format(", on {} z-slabs (one per MPI rank)", ranks.size) : "");
   }
-  if (only == nullptr) j["open_tube"] = open_tube_sizes(options.quick);
+  std::vector<long> measured;
+  for (const long n : sizes) {
+    if (copy_archived_size(archive, size_key(n), j)) continue;
+    measure_size(n, ranks, j);
+    measured.push_back(n);
+  }
+  // One rank: the same sizes on two (scaling) and the open tube, each in a child process; on several ranks the
+  // periodic tube only (the open tube is not on slabs yet).
+  if (ranks.size == 1 && !measured.empty()) scale_to_two_ranks(measured, j);
+  if (ranks.size == 1 && only == nullptr) j["open_tube"] = open_tube_sizes(options.quick);
+  if (ranks.size > 1) {   // the targets are judged on one rank's keys, by the one-rank run (which measures 2 ranks too)
+    j["provenance"] = hs::common::provenance();
+    if (ranks.root() && options.json_file) hs::common::write_json(*options.json_file, j);
+    return 0;
+  }
   hs::common::CheckList checks;
-  const auto measured = [&j](const char* key) { return j.contains(key) ? std::optional<double>(j[key].get<double>()) : std::nullopt; };
-  expect_at_most(checks, options, "cfddem_1e6_s_per_cfd_step", measured("cfddem_1e6_s_per_cfd_step"), 2.0,
+  const auto measured_key = [&j](const char* key) { return j.contains(key) ? std::optional<double>(j[key].get<double>()) : std::nullopt; };
+  expect_at_most(checks, options, "cfddem_1e6_s_per_cfd_step", measured_key("cfddem_1e6_s_per_cfd_step"), 2.0,
                  "issue #28: <= 2 s per CFD step at 1e6 RBCs on this 2-core machine");
-  expect_at_most(checks, options, "cfddem_1e6_peak_rss_GiB", measured("cfddem_1e6_peak_rss_GiB"), 4.0,
+  expect_at_most(checks, options, "cfddem_1e6_peak_rss_GiB", measured_key("cfddem_1e6_peak_rss_GiB"), 4.0,
                  "issue #28: peak memory <= 4 GiB at 1e6 RBCs");
   checks.write_to(j);
   j["provenance"] = hs::common::provenance();

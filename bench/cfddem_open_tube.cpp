@@ -3,14 +3,11 @@
 // the inlet, removal at the outlet) on the CFD-DEM skeleton, started full, timed per CFD step.
 #include "bench/cfddem_open_tube.hpp"
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -20,14 +17,13 @@
 
 #include <fmt/format.h>
 
+#include "bench/clean_child.hpp"
 #include "bench/peak_rss.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/tube_open.hpp"
 #include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 #include "unresolved/dem/insertion.hpp"
-
-extern char** environ;   // POSIX: the environment the child starts from
 
 namespace hs::bench {
 namespace {
@@ -131,31 +127,12 @@ nlohmann::json measure_open_tube(long n_cells, int repetitions) {
 nlohmann::json measure_open_tube_in_child(long n_cells) {
   const auto file =
       std::filesystem::temp_directory_path() / fmt::format("hs_bench_open_tube_{}_{}.json", ::getpid(), n_cells);
-  const std::string setting = fmt::format("{}={}", open_tube_child_env, n_cells);
-  std::vector<std::string> env_text;
-  for (char** e = environ; *e != nullptr; ++e) {
-    const std::string v = *e;
-    if (v.rfind("OMPI_", 0) == 0 || v.rfind("PMIX_", 0) == 0 || v.rfind(open_tube_child_env, 0) == 0) continue;
-    env_text.push_back(v);
-  }
-  env_text.push_back(setting);
-  std::vector<char*> envp;
-  for (auto& v : env_text) envp.push_back(v.data());
-  envp.push_back(nullptr);
-  std::string a0 = "hemoscale", a1 = "bench", a2 = "cfddem", a3 = "--json", a4 = file.string();
-  std::vector<char*> argv{a0.data(), a1.data(), a2.data(), a3.data(), a4.data(), nullptr};
   const auto t0 = Clock::now();
-  pid_t pid = 0;
-  if (const int err = posix_spawn(&pid, "/proc/self/exe", nullptr, nullptr, argv.data(), envp.data()); err != 0) {
-    throw std::runtime_error(fmt::format("bench cfddem: cannot start the open-tube child: {}", std::strerror(err)));
+  if (!run_clean_child({this_executable(), "bench", "cfddem", "--json", file.string()},
+                       {fmt::format("{}={}", open_tube_child_env, n_cells)})) {
+    throw std::runtime_error(fmt::format("bench cfddem: the open-tube child for {} cells failed", n_cells));
   }
-  int status = 0;
-  ::waitpid(pid, &status, 0);
   const double wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    throw std::runtime_error(
-        fmt::format("bench cfddem: the open-tube child for {} cells failed (status {})", n_cells, status));
-  }
   nlohmann::json j = nlohmann::json::parse(std::ifstream(file));
   std::filesystem::remove(file);
   j["wall_s"] = wall_s;

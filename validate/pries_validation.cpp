@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `hemoscale validate pries`: nine tube-pries runs, a CSV/JSON table of Ht_d and mu_rel errors, and a plot.
+// `hemoscale validate pries`: nine tube-pries runs, a CSV/JSON table of Ht_d and mu_rel errors, and a plot. On any
+// number of MPI ranks: every tube on z-slabs, one per rank (docs/cfd-dem.md "Distributed CFD-DEM"); rank 0 writes.
 #include "validate/pries_validation.hpp"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <mpi.h>
 #include <nlohmann/json.hpp>
 
 #include "closures/named_closure_set.hpp"
@@ -33,7 +35,6 @@
 #include "validate/tube_checkpoint.hpp"
 #include "validate/tube_pries_checks.hpp"
 #include "validate/tube_pries_comparison.hpp"
-#include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/hertz_contact_law.hpp"
 
 namespace hs::unresolved {
@@ -137,10 +138,22 @@ bool plot_table(const fs::path& csv, const fs::path& curves, const fs::path& png
 }
 
 fs::path output_dir(const hs::common::TaskOptions& options) {
-  const fs::path dir = options.json_file ? fs::absolute(*options.json_file).parent_path() : fs::current_path();
-  fs::create_directories(dir);   // --json results/pries.json makes results/
-  return dir;
+  return options.json_file ? fs::absolute(*options.json_file).parent_path() : fs::current_path();
 }
+
+/// The ranks share one file system: rank 0 writes the table, the archive and the restart folders' bookkeeping, every
+/// rank its own slab's checkpoint; all of them compute every tube (and so the same checks and exit code).
+struct Ranks {
+  int rank = 0;
+  int size = 1;
+  [[nodiscard]] bool root() const { return rank == 0; }
+  static Ranks world() {
+    Ranks r;
+    MPI_Comm_rank(MPI_COMM_WORLD, &r.rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &r.size);
+    return r;
+  }
+};
 
 }  // namespace
 
@@ -173,25 +186,30 @@ std::string fingerprint(const TubePriesConfig& c, bool quick) {
 
 /// One tube: read from the archive when its fingerprint matches, otherwise run (from its own checkpoint when an
 /// interrupted table left one for the same fingerprint) and archive it (atomically).
-TubePriesResult tube_result(const TubePriesConfig& c, bool quick, const fs::path& archive) {
+TubePriesResult tube_result(const TubePriesConfig& c, bool quick, const fs::path& archive, const Ranks& ranks) {
   const std::string key = fingerprint(c, quick);
+  MPI_Barrier(MPI_COMM_WORLD);   // the archive rank 0 wrote last is complete before any rank looks
   if (fs::exists(archive)) {
     std::ifstream in(archive);
     const nlohmann::json stored = nlohmann::json::parse(in, nullptr, false);
     if (!stored.is_discarded() && stored.value("fingerprint", "") == key) {
-      fmt::print("pries: {} reused (same model, numerics and seed)\n", archive.filename().string());
+      if (ranks.root()) fmt::print("pries: {} reused (same model, numerics and seed)\n", archive.filename().string());
       return tube_pries_result(stored.at("summary"));
     }
   }
-  const TubePriesRestart restart = tube_checkpoint(archive, key);
-  if (restart.resume) {
+  TubePriesRestart restart;
+  if (ranks.root()) restart = tube_checkpoint(archive, key);
+  int resume = restart.resume ? 1 : 0;   // rank 0 has decided (and cleared a stale folder): every rank follows
+  MPI_Bcast(&resume, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  restart = {.dir = tube_checkpoint_folder(archive), .resume = resume == 1, .rank = ranks.rank, .distributed = ranks.size > 1};
+  if (ranks.root() && restart.resume) {
     fmt::print("pries: {} resumed from its checkpoint\n", archive.stem().string());
     std::fflush(stdout);   // before the progress line on stderr
   }
   TubePriesResult r;
   try {
     // A tube takes minutes (D = 30 um) to hours (100 um): its own progress line, ETA to the cap (it may stop earlier).
-    hs::common::Progress progress(fmt::format("pries {}", archive.stem().string()), max_steps_of(c), !quick);
+    hs::common::Progress progress(fmt::format("pries {}", archive.stem().string()), max_steps_of(c), !quick && ranks.root());
     r = simulate_tube_pries(c, [](const TubePriesSample&) {}, restart, nullptr, &progress);
     progress.finish();
   } catch (const hs::common::RunInterrupted& stop) {   // the run's own hint (--resume) is not this command's
@@ -199,8 +217,11 @@ TubePriesResult tube_result(const TubePriesConfig& c, bool quick, const fs::path
                                                  "command resumes it", archive.stem().string(), restart.dir.string()),
                                      stop.exit_code() - 128);
   }
-  hs::common::write_json(archive, {{"fingerprint", key}, {"summary", r.summary}});
-  discard_tube_checkpoint(archive);
+  MPI_Barrier(MPI_COMM_WORLD);   // every rank's last checkpoint is written before rank 0 removes the folder
+  if (ranks.root()) {
+    hs::common::write_json(archive, {{"fingerprint", key}, {"summary", r.summary}});
+    discard_tube_checkpoint(archive);
+  }
   return r;
 }
 
@@ -216,6 +237,7 @@ std::pair<double, double> mean_and_se(const std::vector<double>& v) {
 
 int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCorrection wall,
                     const std::string& default_stem) {
+  const Ranks ranks = Ranks::world();
   const fs::path dir = output_dir(options);
   // The table and plot go beside the JSON and share its name (results/X.json, X.csv, X.png), so runs kept side by
   // side in one folder do not overwrite each other's; each tube's summary is archived in X.tubes/.
@@ -224,12 +246,16 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   const fs::path tubes_dir = dir / (stem + ".tubes");
   const fs::path curves_path = dir / (stem + ".pries_curves.csv");
   const fs::path png = dir / (stem + ".png");
-  write_pries_curves(curves_path, {kTubeHematocrits.begin(), kTubeHematocrits.end()});
   bool plotted = false;
-  std::optional<hs::common::CsvWriter> csv(std::in_place, csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
+  std::optional<hs::common::CsvWriter> csv;   // rank 0's
+  if (ranks.root()) {
+    fs::create_directories(dir);   // --json results/pries.json makes results/
+    write_pries_curves(curves_path, {kTubeHematocrits.begin(), kTubeHematocrits.end()});
+    csv.emplace(csv_path, std::vector<std::string>{"diameter_um", "tube_hematocrit_requested", "tube_hematocrit", "discharge_hematocrit", "pries_discharge_hematocrit",
                                        "ht_d_error_pct", "relative_apparent_viscosity", "pries_relative_apparent_viscosity",
                                        "mu_rel_error_pct", "rbc_count", "steady", "seeds", "ht_d_error_se_pct", "mu_rel_error_se_pct",
                                        "discharge_hematocrit_se", "relative_apparent_viscosity_se"});
+  }
   const std::string closures = options.extra.empty() ? kDefaultClosures : options.extra;
   const int seeds = options.quick ? 1 : kSeeds;
   nlohmann::json result = {{"validation", "pries"},
@@ -237,7 +263,8 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
                            {"closures", closures},
                            {"wall_correction", hs::closures::wall_correction_name(wall)},
                            {"quick", options.quick},
-                           {"seeds", seeds}};
+                           {"seeds", seeds},
+                           {"mpi_ranks", ranks.size}};
   const SuspensionViscosity viscosity =
       suspension_viscosity_from_name(options.suspension_viscosity.empty() ? kDefaultViscosity : options.suspension_viscosity);
   result["suspension_viscosity"] = suspension_viscosity_name(viscosity);
@@ -256,12 +283,15 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
         TubePriesConfig c = config_for(d_um, ht, options.quick, closures, viscosity);
         c.wall_correction = wall;
         c.seed = seed;
-        TubePriesResult r = tube_result(c, options.quick, tubes_dir / fmt::format("D{:.0f}_ht{:.2f}_seed{}.json", d_um, ht, seed));
+        TubePriesResult r =
+            tube_result(c, options.quick, tubes_dir / fmt::format("D{:.0f}_ht{:.2f}_seed{}.json", d_um, ht, seed), ranks);
         add_pries_comparison(c, r);
         all_steady = check_tube_pries_run(fmt::format("{}, seed {}", entry, seed), c, r, check_options, checks) && all_steady;
-        fmt::print("pries: {} seed {}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
-                   entry, seed, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
-        std::fflush(stdout);   // one line per tube as it finishes, also into a log file (a tube takes minutes)
+        if (ranks.root()) {
+          fmt::print("pries: {} seed {}: Ht_d = {:.4f} (Pries {:.4f}, {:+6.1f}%)  mu_rel = {:.4f} (Pries {:.4f}, {:+6.1f}%)\n",
+                     entry, seed, r.ht_d, r.ht_d_pries, r.ht_d_error_pct, r.mu_rel, r.mu_rel_pries, r.mu_rel_error_pct);
+          std::fflush(stdout);
+        }   // one line per tube as it finishes, also into a log file (a tube takes minutes)
         ht_d.push_back(r.ht_d);
         mu_rel.push_back(r.mu_rel);
         ht_d_err.push_back(r.ht_d_error_pct);
@@ -285,7 +315,7 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
       if (!options.quick) check_pries_band(fmt::format("{} (mean of {} seeds)", entry, seeds), e_ht, e_mu, all_steady, check_options, checks);
       max_error = std::max({max_error, std::abs(e_ht), std::abs(e_mu)});
       const double mean_ht_d = mean_and_se(ht_d).first, mean_mu = mean_and_se(mu_rel).first;
-      csv->row({d_um, ht, mean_and_se(ht_t).first, mean_ht_d, mean_and_se(ht_d_ref).first, e_ht, mean_mu, mean_and_se(mu_ref).first,
+      if (csv) csv->row({d_um, ht, mean_and_se(ht_t).first, mean_ht_d, mean_and_se(ht_d_ref).first, e_ht, mean_mu, mean_and_se(mu_ref).first,
                e_mu, mean_and_se(count).first, all_steady ? 1.0 : 0.0, static_cast<double>(seeds), se_ht, se_mu,
                mean_and_se(ht_d).second, mean_and_se(mu_rel).second});
       result["entries"].push_back({{"diameter_um", d_um}, {"tube_hematocrit_requested", ht}, {"seeds", seeds},
@@ -293,6 +323,7 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
                                    {"ht_d_error_pct", e_ht}, {"ht_d_error_se_pct", se_ht}, {"mu_rel_error_pct", e_mu},
                                    {"mu_rel_error_se_pct", se_mu}, {"steady", all_steady}, {"runs", runs}});
       // The figure after every entry: a table of 27 tubes runs for hours, the partial one is worth seeing.
+      if (!ranks.root()) continue;
       plotted = plot_table(csv_path, curves_path, png);
       if (!plotted) fmt::print("pries: the plot failed (tools/plot_pries.py); the table is in {}\n", csv_path.string());
     }
@@ -301,6 +332,7 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   result["band_pct"] = kPriesBandPct / options.tighten;
   checks.write_to(result);
   result["provenance"] = hs::common::provenance();
+  if (!ranks.root()) return checks.exit_code();   // the same checks on every rank: the same exit code
   csv.reset();   // closes the file before the plot reads it
   result["plot"] = plotted ? png.string() : "";   // drawn after the last entry
   result["pries_curves"] = curves_path.string();
@@ -316,17 +348,14 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
 }  // namespace
 
 int validate_pries(const hs::common::TaskOptions& options) {
-  require_one_rank("validate pries");
   return run_pries_table(options, hs::closures::WallCorrection::none, "pries_validation");
 }
 
 int validate_pries_wall(const hs::common::TaskOptions& options) {
-  require_one_rank("validate pries-wall");
   return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre, "pries_wall_validation");
 }
 
 int validate_pries_wall_relative(const hs::common::TaskOptions& options) {
-  require_one_rank("validate pries-wall-relative");
   return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre_relative, "pries_wall_relative_validation");
 }
 

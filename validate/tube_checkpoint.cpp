@@ -13,11 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path folder_of(const fs::path& archive) {
-  fs::path dir = archive;
-  return dir.replace_extension(".checkpoint");
-}
-
 constexpr const char* kFingerprintFile = "fingerprint.json";
 
 /// Whether the folder's checkpoint was written under `fingerprint` (as the archived summary is keyed).
@@ -29,8 +24,13 @@ bool written_under(const fs::path& dir, const std::string& fingerprint) {
 
 }  // namespace
 
+fs::path tube_checkpoint_folder(const fs::path& archive) {
+  fs::path dir = archive;
+  return dir.replace_extension(".checkpoint");
+}
+
 TubePriesRestart tube_checkpoint(const fs::path& archive, const std::string& fingerprint) {
-  const fs::path dir = folder_of(archive);
+  const fs::path dir = tube_checkpoint_folder(archive);
   if (written_under(dir, fingerprint) && hs::common::Checkpoint::exists(dir)) return {.dir = dir, .resume = true};
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -39,6 +39,6 @@ TubePriesRestart tube_checkpoint(const fs::path& archive, const std::string& fin
   return {.dir = dir, .resume = false};
 }
 
-void discard_tube_checkpoint(const fs::path& archive) { fs::remove_all(folder_of(archive)); }
+void discard_tube_checkpoint(const fs::path& archive) { fs::remove_all(tube_checkpoint_folder(archive)); }
 
 }  // namespace hs::unresolved

@@ -10,6 +10,9 @@
 
 namespace hs::unresolved {
 
+/// X.tubes/D30_ht0.10_seed1.json -> X.tubes/D30_ht0.10_seed1.checkpoint/ (what tube_checkpoint prepares).
+[[nodiscard]] std::filesystem::path tube_checkpoint_folder(const std::filesystem::path& archive);
+
 /// The restart folder of the tube archived at `archive` (X.tubes/D30_ht0.10_seed1.json ->
 /// X.tubes/D30_ht0.10_seed1.checkpoint/), holding the tube's fingerprint beside the checkpoint. Resumes only when a
 /// checkpoint is there and was written under the same fingerprint (model, closures, numerics, seed); anything else

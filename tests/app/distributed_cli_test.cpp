@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `mpirun -np 2 hemoscale run` on the tube-pries case (issue #28): it runs on z-slabs, says so in summary.json,
 // writes the whole tube's frames, and its per-rank checkpoint refuses a resume on another rank count (exit 2, the
-// message once, naming the rank count to use). The agreement with one rank to round-off is
+// message once, naming the rank count to use). `mpirun -np 2 hemoscale validate pries` runs every tube on slabs and
+// writes one table, as one rank does; `hemoscale bench cfddem` measures its sizes on two ranks too. The agreement with one rank to round-off is
 // tube_pries_slabs_mpi_tests' (solves at 1e-12); here the case's own tolerances.
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -82,6 +84,67 @@ TEST(DistributedCli, TubePriesOnTwoRanksRunsLikeOneAndResumesOnlyOnTwo) {
   EXPECT_EQ(resumed.code, 2) << resumed.output;
   EXPECT_EQ(count(resumed.output, "checkpoint written on 2 MPI rank(s), this run has 1"), 1u) << resumed.output;
   EXPECT_NE(resumed.output.find("mpirun -np 2"), std::string::npos) << resumed.output;
+}
+
+/// The numbers of a CSV table, row by row (the header skipped).
+std::vector<std::vector<double>> csv_numbers(const fs::path& file) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream text(slurp(file));
+  std::string line;
+  std::getline(text, line);
+  while (std::getline(text, line)) {
+    std::vector<double>& row = rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+  }
+  return rows;
+}
+
+TEST(DistributedCli, PriesTableOnTwoRanksIsOneRanksTable) {
+  const fs::path one = fresh_dir("pries_one"), two = fresh_dir("pries_two");
+  const auto alone = run_on_ranks(1, "validate --quick pries --json " + (one / "pries.json").string());
+  const auto slabs = run_on_ranks(2, "validate --quick pries --json " + (two / "pries.json").string());
+  ASSERT_EQ(slabs.code, alone.code) << slabs.output;
+  // Rank 0 alone reports: one line per tube, one summary line.
+  EXPECT_EQ(count(slabs.output, "pries: D = 30 um, Ht_c 0.05 seed 1:"), 1u) << slabs.output;
+  EXPECT_EQ(count(slabs.output, "pries: max error"), 1u) << slabs.output;
+  EXPECT_EQ(nlohmann::json::parse(slurp(two / "pries.json")).at("mpi_ranks"), 2);
+  const auto a = csv_numbers(one / "pries.csv"), b = csv_numbers(two / "pries.csv");
+  ASSERT_EQ(a.size(), 9u);
+  ASSERT_EQ(b.size(), a.size());
+  // Every tube of --quick solves to 1e-6 relative residual with an AMG that differs with the rank count (as above):
+  // 1e-5 relative on every column (the errors in % are differences of near-equal numbers: 1e-5 of their reference).
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(b[i].size(), a[i].size());
+    for (std::size_t k = 0; k < a[i].size(); ++k) {
+      const double scale = std::max(std::abs(a[i][k]), k == 5 || k == 8 ? 100.0 : 0.0);   // % errors: of 100 %
+      if (scale == 0.0) continue;
+      worst = std::max(worst, std::abs(b[i][k] - a[i][k]) / scale);
+      EXPECT_NEAR(b[i][k], a[i][k], 1e-5 * scale) << "row " << i << ", column " << k;
+    }
+  }
+  std::printf("pries --quick table, two ranks vs one: largest relative difference %.2e\n", worst);
+  EXPECT_FALSE(fs::exists(two / "pries.tubes/D30_ht0.05_seed1.checkpoint"));   // removed once the tube is archived
+}
+
+TEST(DistributedCli, CfdDemBenchMeasuresItsSizesOnTwoRanks) {
+  // The 1e4 size alone (no open tube): on one rank, then a 2-rank job of 1e4 and 2e4 (strong and weak scaling).
+  // Timings are the bench's business; here only that every key is there and makes sense.
+  const fs::path dir = fresh_dir("bench");
+  fs::create_directories(dir);
+  const auto r = hs::test::run_shell("HS_BENCH_CFDDEM_SIZES=10000 " + std::string(HS_BIN) + " bench cfddem --json " +
+                                     (dir / "cfddem.json").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto j = nlohmann::json::parse(slurp(dir / "cfddem.json"));
+  for (const char* key : {"cfddem_1e4_s_per_cfd_step", "cfddem_1e4_s_per_cfd_step_np2", "cfddem_2e4_s_per_cfd_step_np2",
+                          "cfddem_1e4_peak_rss_GiB_np2", "cfddem_1e4_strong_efficiency_np2", "cfddem_1e4_weak_efficiency_np2"}) {
+    ASSERT_TRUE(j.contains(key)) << key << " missing:\n" << r.output;
+    EXPECT_GT(j.at(key).get<double>(), 0.0) << key;
+  }
+  // Both ranks' memory is counted: more than the largest rank's.
+  EXPECT_GT(j.at("cfddem_1e4_peak_rss_GiB_np2").get<double>(), j.at("cfddem_1e4_peak_rss_GiB_per_rank_np2").get<double>());
+  EXPECT_EQ(count(r.output, "strong-scaling efficiency on 2 ranks"), 1u) << r.output;
 }
 
 }  // namespace

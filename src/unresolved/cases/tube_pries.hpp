@@ -83,7 +83,8 @@ struct TubePriesSample {
 struct TubePriesRestart {
   std::filesystem::path dir;   // checkpoint folder; empty: no checkpoints
   bool resume = false;         // continue from the checkpoint in dir
-  int rank = 0;
+  int rank = 0;                // this process's rank in the run's communicator (names its checkpoint file)
+  bool distributed = false;    // the tube on MPI_COMM_WORLD's z-slabs, one per rank; otherwise on this process alone
 };
 
 class CfdDemFrames;

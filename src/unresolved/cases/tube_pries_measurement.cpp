@@ -247,7 +247,7 @@ nlohmann::json TubePriesMeasurement::summary(const CfdDemSolvers& run, const std
 
 TubePriesResult simulate_tube_pries(const TubePriesConfig& c, const std::function<void(const TubePriesSample&)>& observe,
                                     const TubePriesRestart& restart, CfdDemFrames* frames, hs::common::Progress* progress) {
-  CfdDemSolvers run(tube_pries_setup(c));
+  CfdDemSolvers run(tube_pries_setup(c), restart.distributed ? MPI_COMM_WORLD : MPI_COMM_SELF);
   TubePriesMeasurement m(c);
   CfdDemLoopOptions options{.steps = max_steps_of(c),
                             .checkpoint_every_wall_s = c.checkpoint_every_wall_s,
