@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `hemoscale bench cfddem`: RBC spheres at Ht 0.10 in a periodic 100 um tube whose length holds N cells; median
 // wall time of a coupled CFD step (n_coupling DEM steps + coupling + PISO) and the peak RSS. On N MPI ranks the tube
-// is on z-slabs (the case skeleton's CfdDemSolvers) and the keys end in "_npN". On one rank, the same sizes again on
-// two ranks (a child job: strong and weak scaling), then the open tube (cfddem_open_tube.cpp) at 1e4 and 1e5 cells,
-// each in a child process, under the key "open_tube".
+// is on z-slabs (the case skeleton's CfdDemSolvers) and the keys end in "_npN". On one rank, the same sizes again in
+// jobs of one and two ranks at one thread each (strong and weak scaling), then the open tube (cfddem_open_tube.cpp)
+// at 1e4 and 1e5 cells, each in a child process, under the key "open_tube".
 // HS_BENCH_CFDDEM_ARCHIVE=FILE (a JSON this bench wrote) takes the periodic sizes FILE holds from it instead of
 // measuring them (a 1e6 size measured alone, at a quiet hour, completes a run; the failure-path test judges a
 // committed full run this way).
@@ -52,6 +52,8 @@ constexpr int open_tube_repetitions = 5;   // timed CFD steps per open-tube size
 constexpr const char* periodic_sizes_env = "HS_BENCH_CFDDEM_SIZES";
 // Set to a JSON this bench wrote: its periodic sizes are taken from it, not measured (see the file comment).
 constexpr const char* archive_env = "HS_BENCH_CFDDEM_ARCHIVE";
+// Set only in the scaling jobs scale_to_two_ranks() starts: measure the sizes, keys suffixed "_npN", nothing else.
+constexpr const char* scaling_job_env = "HS_BENCH_CFDDEM_SCALING_JOB";
 
 struct Measured {
   double s_per_cfd_step;                // median over the timed steps of the slowest rank's time
@@ -221,69 +223,77 @@ std::string size_key(long n) {
   return fmt::format("cfddem_{}e{}", mantissa, exponent);
 }
 
-/// One periodic size on this job's ranks: printed by rank 0, its keys (suffixed "_npN" on N > 1 ranks) into j.
-void measure_size(long n, const Ranks& ranks, nlohmann::json& j) {
+/// One periodic size on this job's ranks: printed by rank 0, its keys (with `suffix`) into j.
+void measure_size(long n, const Ranks& ranks, const std::string& suffix, nlohmann::json& j) {
   const Measured m = measure(n, 3);
   const std::string key = size_key(n);
-  const std::string np = ranks.size > 1 ? fmt::format("_np{}", ranks.size) : "";
   if (ranks.root()) {
     fmt::print("  {:>8} RBCs{}: {:.3f} s per CFD step (median of 3, n_coupling = {}, {:.1f} DEM steps per CFD step, {} cells), "
-               "peak RSS {:.2f} GiB{}; stages (s, 3 steps):", n, ranks.size > 1 ? fmt::format(" on {} ranks", ranks.size) : "",
+               "peak RSS {:.2f} GiB{}; stages (s, 3 steps):", n,
+               suffix.empty() ? "" : fmt::format(" on {} rank(s) x {} thread(s)", ranks.size, omp_get_max_threads()),
                m.s_per_cfd_step, m.n_coupling, m.mean_substeps, m.cells, m.peak_rss_gib,
                ranks.size > 1 ? fmt::format(" ({:.2f} the largest rank)", m.peak_rss_gib_per_rank) : "");
     for (std::size_t s = 0; s < stage_names.size(); ++s) fmt::print(" {} {:.3f}", stage_names[s], m.stage_seconds[s]);
     fmt::print("; AMG set-ups {} reuses {}\n", m.amg_setups, m.amg_reuses);
     std::fflush(stdout);
   }
-  j[key + "_s_per_cfd_step" + np] = m.s_per_cfd_step;
-  j[key + "_peak_rss_GiB" + np] = m.peak_rss_gib;
-  if (ranks.size > 1) j[key + "_peak_rss_GiB_per_rank" + np] = m.peak_rss_gib_per_rank;
-  j[key + "_dem_steps_per_cfd_step" + np] = m.mean_substeps;
-  for (std::size_t s = 0; s < stage_names.size(); ++s) j[key + "_stage_s" + np][stage_names[s]] = m.stage_seconds[s];
-  j[key + "_amg_setups" + np] = m.amg_setups;
-  j[key + "_amg_reuses" + np] = m.amg_reuses;
+  j[key + "_s_per_cfd_step" + suffix] = m.s_per_cfd_step;
+  j[key + "_peak_rss_GiB" + suffix] = m.peak_rss_gib;
+  if (ranks.size > 1) j[key + "_peak_rss_GiB_per_rank" + suffix] = m.peak_rss_gib_per_rank;
+  j[key + "_dem_steps_per_cfd_step" + suffix] = m.mean_substeps;
+  for (std::size_t s = 0; s < stage_names.size(); ++s) j[key + "_stage_s" + suffix][stage_names[s]] = m.stage_seconds[s];
+  j[key + "_amg_setups" + suffix] = m.amg_setups;
+  j[key + "_amg_reuses" + suffix] = m.amg_reuses;
 }
 
-/// The sizes measured here on one rank again on two (`mpiexec -n 2` of this executable, only those sizes, its
-/// "_np2" keys merged into j), and each size below 1e6 doubled on two ranks: strong scaling (the same tube,
-/// t1 / (2 t2)) and weak scaling (twice the tube on twice the ranks, t1(N) / t2(2N)); 1e6 has no weak partner (2e6
-/// cells, ~5 GiB and minutes per step). A failed child is reported and leaves the keys out.
-void scale_to_two_ranks(const std::vector<long>& measured, nlohmann::json& j) {
-  std::vector<long> sizes = measured;
-  for (const long n : measured) {
-    if (n < 1000000) sizes.push_back(2 * n);
-  }
-  std::sort(sizes.begin(), sizes.end());
+/// `sizes` in a job of `ranks` ranks with one thread each (`mpiexec -n ranks` of this executable, scaling_job_env
+/// set): its "_npN" keys merged into j. False (reported) when the job failed.
+bool run_scaling_job(int ranks, const std::vector<long>& sizes, nlohmann::json& j) {
   std::string list;
   for (const long n : sizes) list += fmt::format("{}{}", list.empty() ? "" : ",", n);
-  fmt::print("cfddem on 2 ranks (z-slabs; mpiexec -n 2, a job of its own, {} thread(s) per rank): {} RBCs\n",
-             std::max(1, omp_get_max_threads() / 2), list);
+  fmt::print("cfddem on {} rank(s) x 1 thread (mpiexec -n {}, a job of its own): {} RBCs\n", ranks, ranks, list);
   std::fflush(stdout);
-  const auto file = std::filesystem::temp_directory_path() / fmt::format("hs_bench_cfddem_np2_{}.json", ::getpid());
-  std::vector<std::string> argv{HS_MPIEXEC, "-n", "2", "--oversubscribe"};
+  const auto file = std::filesystem::temp_directory_path() / fmt::format("hs_bench_cfddem_np{}_{}.json", ranks, ::getpid());
+  std::vector<std::string> argv{HS_MPIEXEC, "-n", std::to_string(ranks), "--oversubscribe"};
   if (::geteuid() == 0) argv.emplace_back("--allow-run-as-root");   // containers run as root; mpiexec refuses it otherwise
   argv.insert(argv.end(), {this_executable(), "bench", "cfddem", "--json", file.string()});
-  // The same cores as this run: its threads shared between the two ranks (strong scaling of the whole machine).
-  const int threads_per_rank = std::max(1, omp_get_max_threads() / 2);
-  j["threads_per_rank_np2"] = threads_per_rank;
-  j["threads_np1"] = omp_get_max_threads();
-  if (!run_clean_child(argv, {fmt::format("{}={}", periodic_sizes_env, list), fmt::format("{}=", archive_env),
-                              fmt::format("OMP_NUM_THREADS={}", threads_per_rank)})) {
-    fmt::print("  the 2-rank run failed: no np2 keys\n");
-    j["np2_failed"] = true;
-    return;
+  if (!run_clean_child(argv, {fmt::format("{}={}", periodic_sizes_env, list), fmt::format("{}=1", scaling_job_env),
+                              "OMP_NUM_THREADS=1"})) {
+    fmt::print("  the {}-rank job failed: no _np{} keys\n", ranks, ranks);
+    j[fmt::format("np{}_failed", ranks)] = true;
+    return false;
   }
-  const nlohmann::json two = nlohmann::json::parse(std::ifstream(file));
+  const nlohmann::json job = nlohmann::json::parse(std::ifstream(file));
   std::filesystem::remove(file);
-  for (const auto& [name, value] : two.items()) {
-    if (name.size() > 4 && name.compare(name.size() - 4, 4, "_np2") == 0) j[name] = value;
+  const std::string suffix = fmt::format("_np{}", ranks);
+  for (const auto& [name, value] : job.items()) {
+    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) j[name] = value;
   }
+  return true;
+}
+
+/// Scaling at one thread per rank, each rank count a job of its own: the sizes measured here on one rank and on
+/// two, and each size below 1e6 doubled on two. Strong scaling t_np1 / (2 t_np2) (the same tube), weak scaling
+/// t_np1(N) / t_np2(2N) (twice the tube on twice the ranks; 1e6 has no partner: 2e6 cells, ~5 GiB, minutes a step),
+/// and the two ranks against this run's one rank with all its threads (the same cores: MPI or OpenMP).
+void scale_to_two_ranks(const std::vector<long>& measured, nlohmann::json& j) {
+  std::vector<long> doubled = measured;
+  for (const long n : measured) {
+    if (n < 1000000) doubled.push_back(2 * n);
+  }
+  std::sort(doubled.begin(), doubled.end());
+  j["threads"] = omp_get_max_threads();
+  if (!run_scaling_job(1, measured, j) || !run_scaling_job(2, doubled, j)) return;
   for (const long n : measured) {
     const std::string key = size_key(n);
-    const double t1 = j[key + "_s_per_cfd_step"].get<double>();
-    const double strong = t1 / (2.0 * j[key + "_s_per_cfd_step_np2"].get<double>());
+    const double t1 = j[key + "_s_per_cfd_step_np1"].get<double>();
+    const double t2 = j[key + "_s_per_cfd_step_np2"].get<double>();
+    const double strong = t1 / (2.0 * t2);
+    const double vs_threads = j[key + "_s_per_cfd_step"].get<double>() / t2;
     j[key + "_strong_efficiency_np2"] = strong;
-    fmt::print("  {:>8} RBCs: strong-scaling efficiency on 2 ranks {:.2f} (speed-up {:.2f})", n, strong, 2.0 * strong);
+    j[key + "_speedup_np2_vs_threads"] = vs_threads;
+    fmt::print("  {:>8} RBCs: strong-scaling efficiency on 2 ranks {:.2f} (speed-up {:.2f} over one rank, {:.2f} over one "
+               "rank with {} threads)", n, strong, 2.0 * strong, vs_threads, omp_get_max_threads());
     if (n < 1000000) {
       const double weak = t1 / j[size_key(2 * n) + "_s_per_cfd_step_np2"].get<double>();
       j[key + "_weak_efficiency_np2"] = weak;
@@ -313,29 +323,26 @@ int run_cfddem_bench(const hs::common::TaskOptions& options) {
       rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
     }
   }
-  const nlohmann::json archive = ranks.size == 1 ? read_archive() : nlohmann::json(nullptr);
+  const bool job = std::getenv(scaling_job_env) != nullptr;   // a scaling job: its sizes, "_npN" keys, no more
+  const nlohmann::json archive = job ? nlohmann::json(nullptr) : read_archive();
   nlohmann::json j;
   if (!archive.is_null()) j["archive"] = archive["file"];
   j["mpi_ranks"] = ranks.size;
-  if (ranks.root()) {
-    fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s{}\n",
-               ranks.size > 1 ? fmt::format(", on {} z-slabs (one per MPI rank)", ranks.size) : "");
-  }
+  if (ranks.root() && !job) fmt::print("cfddem: RBC spheres at Ht 0.10 in a periodic 100 um tube, 10 cells across, dt_CFD = 2e-4 s\n");
   std::vector<long> measured;
   for (const long n : sizes) {
     if (copy_archived_size(archive, size_key(n), j)) continue;
-    measure_size(n, ranks, j);
+    measure_size(n, ranks, job || ranks.size > 1 ? fmt::format("_np{}", ranks.size) : "", j);
     measured.push_back(n);
   }
-  // One rank: the same sizes on two (scaling) and the open tube, each in a child process; on several ranks the
-  // periodic tube only (the open tube is not on slabs yet).
-  if (ranks.size == 1 && !measured.empty()) scale_to_two_ranks(measured, j);
-  if (ranks.size == 1 && only == nullptr) j["open_tube"] = open_tube_sizes(options.quick);
-  if (ranks.size > 1) {   // the targets are judged on one rank's keys, by the one-rank run (which measures 2 ranks too)
+  if (job || ranks.size > 1) {   // the targets are judged on one rank's keys, by the one-rank run (which scales too)
     j["provenance"] = hs::common::provenance();
     if (ranks.root() && options.json_file) hs::common::write_json(*options.json_file, j);
     return 0;
   }
+  // One rank: scaling jobs of the same sizes, then the open tube, each in processes of their own.
+  if (!measured.empty()) scale_to_two_ranks(measured, j);
+  if (only == nullptr) j["open_tube"] = open_tube_sizes(options.quick);
   hs::common::CheckList checks;
   const auto measured_key = [&j](const char* key) { return j.contains(key) ? std::optional<double>(j[key].get<double>()) : std::nullopt; };
   expect_at_most(checks, options, "cfddem_1e6_s_per_cfd_step", measured_key("cfddem_1e6_s_per_cfd_step"), 2.0,

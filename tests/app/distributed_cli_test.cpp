@@ -129,7 +129,8 @@ TEST(DistributedCli, PriesTableOnTwoRanksIsOneRanksTable) {
 }
 
 TEST(DistributedCli, CfdDemBenchMeasuresItsSizesOnTwoRanks) {
-  // The 1e4 size alone (no open tube): on one rank, then a 2-rank job of 1e4 and 2e4 (strong and weak scaling).
+  // The 1e4 size alone (no open tube): on one rank, then jobs of one rank (1e4) and two (1e4, 2e4) at one thread
+  // per rank (strong and weak scaling).
   // Timings are the bench's business; here only that every key is there and makes sense.
   const fs::path dir = fresh_dir("bench");
   fs::create_directories(dir);
@@ -137,7 +138,8 @@ TEST(DistributedCli, CfdDemBenchMeasuresItsSizesOnTwoRanks) {
                                      (dir / "cfddem.json").string());
   ASSERT_EQ(r.code, 0) << r.output;
   const auto j = nlohmann::json::parse(slurp(dir / "cfddem.json"));
-  for (const char* key : {"cfddem_1e4_s_per_cfd_step", "cfddem_1e4_s_per_cfd_step_np2", "cfddem_2e4_s_per_cfd_step_np2",
+  for (const char* key : {"cfddem_1e4_s_per_cfd_step", "cfddem_1e4_s_per_cfd_step_np1", "cfddem_1e4_s_per_cfd_step_np2",
+                          "cfddem_1e4_speedup_np2_vs_threads", "cfddem_2e4_s_per_cfd_step_np2",
                           "cfddem_1e4_peak_rss_GiB_np2", "cfddem_1e4_strong_efficiency_np2", "cfddem_1e4_weak_efficiency_np2"}) {
     ASSERT_TRUE(j.contains(key)) << key << " missing:\n" << r.output;
     EXPECT_GT(j.at(key).get<double>(), 0.0) << key;
