@@ -8,6 +8,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include "common/dimensionless_groups.hpp"
 #include "unresolved/cases/opening_flux.hpp"
@@ -26,6 +27,14 @@ std::size_t at(std::size_t opening, std::size_t what) { return kFirstOpening + k
 
 /// Along the flow: +1 into the domain at an inlet, out of it at an outlet.
 double along_flow(const hs::common::Opening& o) { return o.kind == OpeningKind::inlet ? -1.0 : 1.0; }
+
+/// Sums over the ranks of a run on slabs (the values themselves on one rank); collective on slabs.
+std::vector<double> summed(const CfdDemSolvers& run, std::vector<double> v) {
+  if (run.slabs() != nullptr) {
+    MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, run.comm());
+  }
+  return v;
+}
 
 /// Mean of column `col` over rows [first, last).
 double window_mean(const std::vector<std::vector<double>>& rows, long first, long last, std::size_t col) {
@@ -54,7 +63,7 @@ std::vector<std::string> OpenGeometryMeasurement::columns() const {
 void OpenGeometryMeasurement::prepare(CfdDemSolvers& run) {
   traffic_.emplace(OpeningTrafficSpec{.openings = openings_, .discharge_hematocrit = c_.discharge_hematocrit,
                                       .particles = c_.particles, .seed = c_.seed},
-                   run.shape(), run.dem().domain());
+                   run.shape(), run.dem().domain(), run.slabs());
   domain_volume_m3_ = 0.0;
   const double cell = std::pow(run.grid().dx_m(), 3);
   const auto& n = run.grid().cells();
@@ -63,6 +72,7 @@ void OpenGeometryMeasurement::prepare(CfdDemSolvers& run) {
       for (int i = 0; i < n[0]; ++i) domain_volume_m3_ += run.grid().fluid_fractions()(i, j, k) * cell;
     }
   }
+  domain_volume_m3_ = summed(run, {domain_volume_m3_})[0];   // on slabs, each block's cells
 }
 
 void OpenGeometryMeasurement::start(CfdDemSolvers& /*run*/) {}   // the domain starts empty and at rest
@@ -83,9 +93,9 @@ void OpenGeometryMeasurement::exchange_cells(CfdDemSolvers& run) {
                      {.flow_rate_m3_s = q_blood, .velocity_m_s = [&fluid](const hs::common::Vec3& x) { return fluid.velocity_at(x); }});
 }
 
-void OpenGeometryMeasurement::remember_volumes() {
+void OpenGeometryMeasurement::remember_volumes(const std::vector<OpeningCounters>& counters) {
   for (std::size_t k = 0; k < openings_.size(); ++k) {
-    const auto& n = traffic_->counters()[k];
+    const auto& n = counters[k];
     last_net_volume_m3_[k] = n.rbc_volume_in_m3 - n.rbc_volume_out_m3;
   }
 }
@@ -100,6 +110,7 @@ std::vector<double> OpenGeometryMeasurement::sample(const CfdDemSolvers& run) {
   }
   const FvmSolver& fluid = run.fluid();
   double plasma = 0.0;
+  double debt = 0.0;   // each inlet's, on the rank that injects there
   const double cell = std::pow(run.grid().dx_m(), 3);
   const auto& n = run.grid().cells();
   for (int k = 0; k < n[2]; ++k) {
@@ -107,22 +118,26 @@ std::vector<double> OpenGeometryMeasurement::sample(const CfdDemSolvers& run) {
       for (int i = 0; i < n[0]; ++i) plasma += fluid.void_fraction()(i, j, k) * run.grid().fluid_fractions()(i, j, k) * cell;
     }
   }
-  const double dt = fluid.settings().dt_s;
-  const double present = static_cast<double>(p.n_owned());
-  std::vector<double> row{fluid.time_s(), present, volume / domain_volume_m3_, present > 0.0 ? di / present : 0.0, plasma};
-  double debt = 0.0;
   for (std::size_t k = 0; k < openings_.size(); ++k) {
-    const auto& c = traffic_->counters()[k];
+    if (const CellInjector* injector = traffic_->injector(k)) debt += injector->debt_cells();
+  }
+  const std::vector<double> all = summed(run, {volume, di, static_cast<double>(p.n_owned()), plasma, debt});
+  const double dt = fluid.settings().dt_s;
+  const double present = all[2];
+  std::vector<double> row{fluid.time_s(), present, all[0] / domain_volume_m3_, present > 0.0 ? all[1] / present : 0.0, all[3]};
+  const std::vector<OpeningCounters> counters = traffic_->summed_counters();
+  for (std::size_t k = 0; k < openings_.size(); ++k) {
+    const auto& c = counters[k];
     const double net_in = c.rbc_volume_in_m3 - c.rbc_volume_out_m3;
     const double sign = along_flow(openings_[k]);
     row.insert(row.end(), {static_cast<double>(c.cells_in), static_cast<double>(c.cells_out),
                            0.0 - sign * (net_in - last_net_volume_m3_[k]) / dt,   // 0 - x: +0, never -0, in the csv
                            sign * opening_outward_flux_m3_s(fluid, openings_[k])});
-    if (const CellInjector* injector = traffic_->injector(k)) debt += injector->debt_cells();
   }
-  remember_volumes();
-  const auto error = traffic_->cells_injected() - traffic_->cells_removed() - static_cast<std::int64_t>(p.n_owned());
-  row.insert(row.end(), {debt, static_cast<double>(error), static_cast<double>(fluid.last_stats().pressure_iterations)});
+  remember_volumes(counters);
+  double error = -present;   // injected - removed - present: exact integers in doubles
+  for (const auto& c : counters) error += static_cast<double>(c.cells_in - c.cells_out);
+  row.insert(row.end(), {all[4], error, static_cast<double>(fluid.last_stats().pressure_iterations)});
   return row;
 }
 
@@ -130,10 +145,11 @@ void OpenGeometryMeasurement::write_state(hs::common::Checkpoint& cp) const { tr
 
 void OpenGeometryMeasurement::read_state(const hs::common::Checkpoint& cp) {
   traffic_->read_state(cp, "traffic.");
-  remember_volumes();
+  remember_volumes(traffic_->summed_counters());
 }
 
-nlohmann::json OpenGeometryMeasurement::opening_summary(const std::vector<std::vector<double>>& rows, long first) const {
+nlohmann::json OpenGeometryMeasurement::opening_summary(const std::vector<std::vector<double>>& rows, long first,
+                                                        const std::vector<OpeningCounters>& counters) const {
   const long last = static_cast<long>(rows.size());
   double inflow_blood = 0.0;
   double inflow_rbc = 0.0;
@@ -144,7 +160,7 @@ nlohmann::json OpenGeometryMeasurement::opening_summary(const std::vector<std::v
   }
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t k = 0; k < openings_.size(); ++k) {
-    const auto& n = traffic_->counters()[k];
+    const auto& n = counters[k];
     const double rbc = window_mean(rows, first, last, at(k, kRbcFlux));
     const double fluid = window_mean(rows, first, last, at(k, kFluidFlux));
     list.push_back({{"name", openings_[k].name},
@@ -174,8 +190,13 @@ nlohmann::json OpenGeometryMeasurement::summary(const CfdDemSolvers& run, const 
   double owed = 0.0;
   double fluid_in = 0.0;
   double fluid_out = 0.0;
+  const std::vector<OpeningCounters> counters = traffic_->summed_counters();   // collective on slabs
+  std::int64_t cells_in = 0;
+  std::int64_t cells_out = 0;
   for (std::size_t k = 0; k < openings_.size(); ++k) {
-    const auto& n = traffic_->counters()[k];
+    const auto& n = counters[k];
+    cells_in += n.cells_in;
+    cells_out += n.cells_out;
     injected += n.rbc_volume_in_m3;
     owed += c_.discharge_hematocrit[k] * n.fluid_volume_in_m3;
     const double q = window_mean(rows, first, total, at(k, kFluidFlux));
@@ -193,14 +214,14 @@ nlohmann::json OpenGeometryMeasurement::summary(const CfdDemSolvers& run, const 
   res["domain_fluid_volume_m3"] = domain_volume_m3_;
   res["residence_time_s"] = residence_s;
   res["residence_times"] = static_cast<double>(total) * dt / residence_s;
-  res["cells_injected"] = traffic_->cells_injected();
-  res["cells_removed"] = traffic_->cells_removed();
-  res["cells_present"] = static_cast<long>(run.dem().particles().n_owned());
+  res["cells_injected"] = cells_in;
+  res["cells_removed"] = cells_out;
+  res["cells_present"] = static_cast<long>(summed(run, {static_cast<double>(run.dem().particles().n_owned())})[0]);
   res["bookkeeping_exact_every_step"] = exact;
   res["rbc_volume_injected_m3"] = injected;
   res["rbc_volume_owed_m3"] = owed;   // sum over inlets of Ht_d x the blood volume that came in
   res["injected_over_owed"] = owed > 0.0 ? injected / owed : 0.0;
-  res["openings"] = opening_summary(rows, first);
+  res["openings"] = opening_summary(rows, first, counters);
   res["fluid_balance_pct"] = fluid_in > 0.0 ? 100.0 * (fluid_out + stored - fluid_in) / fluid_in : 0.0;
   res["domain_hematocrit"] = window_mean(rows, first, total, kDomainHt);
   res["domain_hematocrit_halves"] = {window_mean(rows, first, middle, kDomainHt), window_mean(rows, middle, total, kDomainHt)};

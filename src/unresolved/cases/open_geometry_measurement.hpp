@@ -23,6 +23,7 @@ namespace hs::unresolved {
 ///
 /// Each inlet k is owed Ht_d,k Q_b,k dt of RBC volume a step, Q_b,k = Q_p,k / (1 - Ht_d,k) with Q_p,k the plasma flux
 /// through its faces as the solver counts it, so its inflow's discharge hematocrit is Ht_d,k (as tube-open).
+/// On slabs every value is the whole domain's (summed over the ranks; sample and summary are collective).
 class OpenGeometryMeasurement final : public CfdDemMeasurement {
  public:
   /// `case_type` names the case in checkpoints (tube-open runs on this measurement too).
@@ -40,8 +41,9 @@ class OpenGeometryMeasurement final : public CfdDemMeasurement {
 
  private:
   void exchange_cells(CfdDemSolvers& run);
-  void remember_volumes();
-  [[nodiscard]] nlohmann::json opening_summary(const std::vector<std::vector<double>>& rows, long first) const;
+  void remember_volumes(const std::vector<OpeningCounters>& counters);   // every rank's, summed
+  [[nodiscard]] nlohmann::json opening_summary(const std::vector<std::vector<double>>& rows, long first,
+                                               const std::vector<OpeningCounters>& counters) const;
 
   OpenGeometryConfig c_;
   std::string case_type_;

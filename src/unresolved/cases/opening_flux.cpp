@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include <mpi.h>
+
 namespace hs::unresolved {
 
 double opening_outward_flux_m3_s(const FvmSolver& fluid, const hs::common::Opening& opening) {
@@ -34,6 +36,10 @@ double opening_outward_flux_m3_s(const FvmSolver& fluid, const hs::common::Openi
         sum += e * ap[idx] * area * u[idx];
       }
     }
+  }
+  if (const auto* slabs = g.slabs()) {   // the whole opening: every block's share (a z-side is one block's)
+    if (axis == 2 && !slabs->on_global_face(2, sign > 0.0 ? 1 : 0)) sum = 0.0;
+    MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, slabs->comm());
   }
   return sign * sum;
 }

@@ -9,8 +9,8 @@ namespace hs::unresolved {
 
 /// Sum over the box faces inside the opening's disc (lateral <= radius + dx) of eps_f a h^2 u, eps_f the mean of
 /// the two cells beside the face (ghost layer: zero gradient), a the face's aperture: the flux the pressure equation
-/// balances. Positive along the opening's outward normal (out of the domain). pre: the opening lies on a box side
-/// (check_openings).
+/// balances. Positive along the opening's outward normal (out of the domain). On slabs collective: the whole
+/// opening's flux on every rank. pre: the opening lies on a box side (check_openings).
 [[nodiscard]] double opening_outward_flux_m3_s(const FvmSolver& fluid, const hs::common::Opening& opening);
 
 }  // namespace hs::unresolved

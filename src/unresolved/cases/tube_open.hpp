@@ -58,10 +58,11 @@ struct TubeOpenConfig {
 /// The open tube's solvers (open_geometry_setup of open_geometry_of).
 [[nodiscard]] CfdDemSetup tube_open_setup(const TubeOpenConfig& c);
 
-/// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says.
+/// Runs the case without a run folder (tests): every time-series row to `on_row`, checkpoints as `restart` says
+/// (restart.rank: this process's rank in `comm`), on the z-slabs of `comm`'s ranks (one rank: the whole tube).
 /// Returns summary.json's blocks (results, groups, numerics, timings), without the checks.
 [[nodiscard]] nlohmann::json simulate_tube_open(const TubeOpenConfig& c, const std::function<void(const std::vector<double>&)>& on_row,
-                                                const CfdDemRestart& restart = {});
+                                                const CfdDemRestart& restart = {}, MPI_Comm comm = MPI_COMM_SELF);
 
 /// tube-open's own summary values (in the "results" block) from open-geometry's: discharge_hematocrit_inlet and _outlet,
 /// outlet_vs_inlet_discharge_pct, tube_hematocrit (the domain's), tube_over_discharge_hematocrit (< 1: Fahraeus),

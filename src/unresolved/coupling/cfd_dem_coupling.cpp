@@ -41,13 +41,6 @@ CfdDemCoupling::CfdDemCoupling(FvmSolver& fluid, DemSystem& dem, CouplingSetting
   if ((slabs_ != nullptr) != (fluid_.grid().slabs() != nullptr)) {
     throw std::logic_error("coupling: the fluid's grid and the DEM must both be on slabs, or neither");
   }
-  if (slabs_ != nullptr) {
-    if (settings_.closure_frame == ClosureFrame::channel) {
-      throw hs::common::ConfigError(
-          "coupling: the channel closure frame does not run on several ranks yet (docs/cfd-dem.md, \"Distributed "
-          "CFD-DEM\" step 4): run on one rank, or use the tube frame");
-    }
-  }
   const double ratio = fluid_.settings().dt_s / dem_.time_step_s();
   if (settings_.n_coupling < 1 || std::abs(ratio - settings_.n_coupling) > 1e-9 * ratio) {
     throw hs::common::ConfigError(fmt::format("coupling: dt_CFD / dt_DEM = {:.6g} must equal n_coupling = {}",
@@ -82,13 +75,6 @@ void CfdDemCoupling::particle_forces() {
   lift_reaction_N_.fill(Vec3{});
   map_.locate(p);
   if (channel_) channel_->new_step();
-  // What the threaded loop below must not do itself: the channel frame's memo and the self-mobility tables are
-  // filled here, on one thread, in particle order.
-  std::vector<LocalChannel> channels;
-  if (channel_) {
-    channels.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) channels.push_back(local_channel(particle_position(p, i)));
-  }
   if (settings_.buoyancy_over_footprint) sum_over_footprints();
   // The rows sampled here: the owned ones; on slabs those (owned or remote ghosts) whose centre is in this block,
   // every other row's values zero, so that sending the ghosts' values to their owners adds each value to zeros.
@@ -111,6 +97,19 @@ void CfdDemCoupling::particle_forces() {
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (map_.centred_here(i)) rows.push_back(i);
     }
+  }
+  // What the threaded loop below must not do itself: the channel frame's memo and the self-mobility tables are
+  // filled here, on one thread, in particle order (on slabs, every rank's sections first, together).
+  std::vector<LocalChannel> channels;
+  if (channel_) {
+    if (slabs_ != nullptr) {
+      std::vector<Vec3> xs;
+      xs.reserve(rows.size());
+      for (const std::size_t i : rows) xs.push_back(particle_position(p, i));
+      channel_->prepare_sections(xs);
+    }
+    channels.resize(rows.empty() ? 0 : rows.back() + 1);
+    for (const std::size_t i : rows) channels[i] = local_channel(particle_position(p, i));
   }
   if (correct) {   // the tables, measured on first use, on one thread; a refusal stops every rank
     std::string refused;

@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <map>
 #include <vector>
 
 #include "common/geometry/shape.hpp"
@@ -52,6 +54,11 @@ class ChannelFrame {
   };
   [[nodiscard]] Local at(const hs::common::Vec3& x_m);
   void new_step() { ++step_; }
+  /// On z-slabs, collective, after new_step() and before at(): the sections of the cells holding `xs` (this rank's
+  /// points; every one in this block) and every other rank's, each summed over the ranks' cells, so a section may
+  /// reach any plane of the grid. A section is keyed by the whole grid's index of the cell holding its centre (as one
+  /// rank keys it), its direction from the rank whose block holds that centre.
+  void prepare_sections(const std::vector<hs::common::Vec3>& xs);
 
  private:
   /// The channel point of a cell (flat index of its (i, j, k)), and of the cell holding its centre, on first use.
@@ -64,6 +71,11 @@ class ChannelFrame {
   std::vector<ChannelFlow> flows_;
   std::vector<long> flow_step_;
   long step_ = 0;
+  // On slabs: per block cell, the whole grid's index of its section's cell (-1: not yet), and this step's flows.
+  std::vector<std::int64_t> section_key_;
+  std::map<std::int64_t, ChannelFlow> slab_flows_;
+  std::map<std::int64_t, ChannelPoint> key_points_;   // the channel point of a section's cell (geometry: kept)
+  [[nodiscard]] std::int64_t section_key(const std::array<int, 3>& cell, std::size_t flat);
 };
 
 }  // namespace hs::unresolved

@@ -94,7 +94,7 @@ std::vector<OpeningCounters> OpeningTraffic::summed_counters() const {
 }
 
 const CellInjector* OpeningTraffic::injector(std::size_t index) const {
-  return injectors_.at(index) ? &*injectors_[index] : nullptr;
+  return injectors_.at(index) && injects_here_[index] ? &*injectors_[index] : nullptr;
 }
 
 std::int64_t OpeningTraffic::cells_injected() const {
@@ -176,7 +176,13 @@ void OpeningTraffic::exchange(DemSystem& dem, double dt_s, const FluidAtOpenings
     first += static_cast<std::int64_t>(count[k]);
   }
   next_id_ = first;
-  if (slabs_ != nullptr && slabs_->any(edited)) dem.begin_edit();   // the rebuild of the next step is collective
+  if (slabs_ != nullptr && slabs_->any(edited)) {
+    dem.begin_edit();
+    // The collective rebuild now, not at the next step: the ghost copies and the plan that sends a ghost's values to
+    // its owner index the store as it was before the edit, and the coupling reads them before the next DEM step
+    // (a sphere's fluid values went to the new cell's row). One rank has no such copies: its rebuild stays where it was.
+    dem.initialize();
+  }
 }
 
 void OpeningTraffic::exchange(ParticleStore& particles, double dt_s, const FluidAtOpenings& fluid) {

@@ -69,7 +69,8 @@ class OpeningTraffic {
   [[nodiscard]] std::vector<OpeningCounters> summed_counters() const;
   [[nodiscard]] std::int64_t cells_injected() const;
   [[nodiscard]] std::int64_t cells_removed() const;
-  /// The injector of opening `index` (null for an outlet), e.g. for its debt.
+  /// The injector of opening `index` (null for an outlet, and on slabs for an inlet another rank injects at), e.g.
+  /// for its debt.
   [[nodiscard]] const CellInjector* injector(std::size_t index) const;
 
   /// Restart (opening_traffic_checkpoint.cpp): counters, each inlet's debt and random stream and the next id, under
