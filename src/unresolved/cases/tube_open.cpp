@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Case type "tube-open": the case file, the open tube's solvers and the `hemoscale run` entry.
+// Case type "tube-open": the case file, the open tube's solvers and the `hemoscale run` entry. Runs on any number of
+// MPI ranks (z-slabs of the tube, docs/cfd-dem.md "Distributed CFD-DEM").
 #include "unresolved/cases/tube_open.hpp"
 
 #include <algorithm>
@@ -17,7 +18,6 @@
 #include "unresolved/cases/loop_numerics.hpp"
 #include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/cases/step_limits.hpp"
-#include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/cell_injector.hpp"
 
 namespace hs::unresolved {
@@ -135,9 +135,6 @@ void check_tube_open(const TubeOpenConfig& c, const nlohmann::json& s, hs::commo
 }
 
 int run_tube_open(const hs::common::CaseRequest& request) {
-  // Not yet on several ranks: on slabs the runs part from one rank's as the first cells near a slab's face
-  // (tests/unresolved/cases/tube_open_slabs_mpi_test.cpp, issue #28).
-  require_one_rank("tube-open");   // before the run folder is made
   const TubeOpenConfig c = parse_tube_open(*request.config, request.quick);
   const double tube_volume_m3 = std::numbers::pi * 0.25 * c.diameter_m * c.diameter_m * c.length_m;
   require_tube_grid_memory(*request.config, c.diameter_m, c.length_m, c.cells_across,

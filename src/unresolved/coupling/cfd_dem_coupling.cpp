@@ -405,6 +405,7 @@ void CfdDemCoupling::dem_substeps() {
 }
 
 void CfdDemCoupling::refresh_ghosts() {
+  if (slabs_ == nullptr) return;
   ParticleStore& p = dem_.particles();
   slabs_->update_ghosts(p);   // the last step's second half kick moved the owners' velocities
   std::vector<ParticleStore::Column*> columns{&p.drag_coefficient_N_s_m()};
