@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <tuple>
+#include <utility>
 #include <stdexcept>
 
 #include <mpi.h>
@@ -78,6 +80,59 @@ std::array<int, 3> global_cell_of_key(const FvmGrid& g, std::int64_t key) {
   return {static_cast<int>(key % n[0]), static_cast<int>((key / n[0]) % n[1]), static_cast<int>(key / (static_cast<std::int64_t>(n[0]) * n[1]))};
 }
 
+/// The section's flux, sum of a (eps u + (1 - eps) Us) . t, and fluid volume, sum of a, over the cells whose centre
+/// lies in its slab (channel_flow), a the cell's fluid fraction. On z-slabs only this block's own planes (a plane
+/// beyond them is another rank's to count), whichever of the whole grid's planes the section reaches.
+std::pair<double, double> section_sums(const FvmSolver& fluid, const ChannelPoint& at, const Vec3& direction) {
+  const FvmGrid& grid = fluid.grid();
+  const bool slabs = grid.slabs() != nullptr;
+  const double dx = grid.dx_m();
+  const double reach = at.channel_radius_m + 2.0 * dx;
+  std::array<int, 3> lo{};
+  std::array<int, 3> hi{};
+  for (int a = 0; a < 3; ++a) {
+    lo[static_cast<std::size_t>(a)] = static_cast<int>(std::floor((at.centre_m[a] - reach - grid.origin_m()[a]) / dx));
+    hi[static_cast<std::size_t>(a)] = static_cast<int>(std::ceil((at.centre_m[a] + reach - grid.origin_m()[a]) / dx));
+  }
+  const BlockField<double>& fraction = grid.fluid_fractions();
+  const BlockField<double>& eps = fluid.void_fraction();
+  const BlockField<Vec3>& us = fluid.particle_velocity_m_s();
+  double flux = 0.0;
+  double volume = 0.0;
+  for (int k = lo[2]; k <= hi[2]; ++k) {
+    for (int j = lo[1]; j <= hi[1]; ++j) {
+      for (int i = lo[0]; i <= hi[0]; ++i) {
+        const std::array<int, 3> unwrapped{i, j, k};
+        std::array<int, 3> c = unwrapped;
+        bool inside = true;
+        for (std::size_t a = 0; a < 3; ++a) {
+          int n = grid.cells()[a];
+          if (slabs && a == 2) {   // through the whole grid's index, back to this block's
+            n = grid.global_cells()[2];
+            c[2] += grid.first_plane();
+            if (grid.periodic(2)) c[2] = ((c[2] % n) + n) % n;
+            c[2] -= grid.first_plane();
+            inside = inside && c[2] >= 0 && c[2] < grid.cells()[2];
+            continue;
+          }
+          if (grid.periodic(static_cast<int>(a))) c[a] = ((c[a] % n) + n) % n;
+          inside = inside && c[a] >= 0 && c[a] < n;
+        }
+        if (!inside || fraction(c[0], c[1], c[2]) <= 0.0) continue;
+        Vec3 d;
+        for (int a = 0; a < 3; ++a) d[a] = grid.origin_m()[a] + (unwrapped[static_cast<std::size_t>(a)] + 0.5) * dx - at.centre_m[a];
+        const double along = dot(d, direction);
+        if (std::abs(along) >= 1.5 * dx || norm(d - along * direction) > at.channel_radius_m + dx) continue;
+        const double e = eps(c[0], c[1], c[2]);
+        const Vec3 mixture = e * fluid.cell_velocity(c[0], c[1], c[2]) + (1.0 - e) * us(c[0], c[1], c[2]);
+        flux += fraction(c[0], c[1], c[2]) * dot(mixture, direction);
+        volume += fraction(c[0], c[1], c[2]);
+      }
+    }
+  }
+  return {flux, volume};
+}
+
 constexpr double kGradientStep = 1e-5;   // of the length scale
 // A gradient this short means x sits on the medial axis (within half a step), where no wall is nearest.
 constexpr double kMedialGradient = 0.5;
@@ -124,43 +179,7 @@ ChannelFlow channel_flow(const FvmSolver& fluid, const ChannelPoint& at) {
   // lies in the section's slab: within 1.5 dx of the centre along the flow (three cell layers in a grid-aligned
   // tube) and within R_c + dx of the medial axis (every cut cell of a tube's wall). In a developed flow the
   // average of the flux density over a slab is the section's flux over its area: Q / A in a tube.
-  const FvmGrid& grid = fluid.grid();
-  const double dx = grid.dx_m();
-  const double reach = at.channel_radius_m + 2.0 * dx;
-  std::array<int, 3> lo{};
-  std::array<int, 3> hi{};
-  for (int a = 0; a < 3; ++a) {
-    lo[static_cast<std::size_t>(a)] = static_cast<int>(std::floor((at.centre_m[a] - reach - grid.origin_m()[a]) / dx));
-    hi[static_cast<std::size_t>(a)] = static_cast<int>(std::ceil((at.centre_m[a] + reach - grid.origin_m()[a]) / dx));
-  }
-  const BlockField<double>& fraction = grid.fluid_fractions();
-  const BlockField<double>& eps = fluid.void_fraction();
-  const BlockField<Vec3>& us = fluid.particle_velocity_m_s();
-  double flux = 0.0;
-  double volume = 0.0;
-  for (int k = lo[2]; k <= hi[2]; ++k) {
-    for (int j = lo[1]; j <= hi[1]; ++j) {
-      for (int i = lo[0]; i <= hi[0]; ++i) {
-        const std::array<int, 3> unwrapped{i, j, k};
-        std::array<int, 3> c = unwrapped;
-        bool inside = true;
-        for (std::size_t a = 0; a < 3; ++a) {
-          const int n = grid.cells()[a];
-          if (grid.periodic(static_cast<int>(a))) c[a] = ((c[a] % n) + n) % n;
-          inside = inside && c[a] >= 0 && c[a] < n;
-        }
-        if (!inside || fraction(c[0], c[1], c[2]) <= 0.0) continue;
-        Vec3 d;
-        for (int a = 0; a < 3; ++a) d[a] = grid.origin_m()[a] + (unwrapped[static_cast<std::size_t>(a)] + 0.5) * dx - at.centre_m[a];
-        const double along = dot(d, out.direction);
-        if (std::abs(along) >= 1.5 * dx || norm(d - along * out.direction) > at.channel_radius_m + dx) continue;
-        const double e = eps(c[0], c[1], c[2]);
-        const Vec3 mixture = e * fluid.cell_velocity(c[0], c[1], c[2]) + (1.0 - e) * us(c[0], c[1], c[2]);
-        flux += fraction(c[0], c[1], c[2]) * dot(mixture, out.direction);
-        volume += fraction(c[0], c[1], c[2]);
-      }
-    }
-  }
+  const auto [flux, volume] = section_sums(fluid, at, out.direction);
   out.mean_velocity_m_s = volume > 0.0 ? flux / volume : 0.0;
   return out;
 }
@@ -268,7 +287,7 @@ void ChannelFrame::prepare_sections(const std::vector<Vec3>& xs) {
   const double z_hi = z_lo + n_z * dx;
   const double length = grid.global_cells()[2] * dx;
   const double global_lo = z_lo - grid.first_plane() * dx;
-  std::vector<double> sums(5 * keys.size(), 0.0);   // per section: the centre's velocity (3), flux, volume
+  std::vector<double> sums(3 * keys.size(), 0.0);   // per section: the velocity at its centre
   for (std::size_t q = 0; q < keys.size(); ++q) {
     auto point = key_points_.find(keys[q]);
     if (point == key_points_.end()) {
@@ -280,73 +299,23 @@ void ChannelFrame::prepare_sections(const std::vector<Vec3>& xs) {
     if (grid.periodic(2)) z -= length * std::floor((z - global_lo) / length);
     if ((z >= z_lo || first) && (z < z_hi || last)) {
       const Vec3 u = fluid_.velocity_at(point->second.centre_m);
-      for (int a = 0; a < 3; ++a) sums[5 * q + static_cast<std::size_t>(a)] = u[a];
+      for (int a = 0; a < 3; ++a) sums[3 * q + static_cast<std::size_t>(a)] = u[a];
     }
   }
   MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, comm);
   // Each section's flux and volume over this block's own cells (channel_flow's slab and weights), then summed.
-  const BlockField<double>& fraction = grid.fluid_fractions();
-  const BlockField<double>& eps = fluid_.void_fraction();
-  const BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
+  std::vector<double> parts(2 * keys.size(), 0.0);
   for (std::size_t q = 0; q < keys.size(); ++q) {
     const ChannelPoint& at = key_points_.at(keys[q]);
-    const Vec3 u{sums[5 * q], sums[5 * q + 1], sums[5 * q + 2]};
+    const Vec3 u{sums[3 * q], sums[3 * q + 1], sums[3 * q + 2]};
     const double speed = norm(u);
     if (!(speed > 0.0) || !(at.channel_radius_m > 0.0)) continue;
-    const Vec3 direction = u / speed;
-    const double reach = at.channel_radius_m + 2.0 * dx;
-    std::array<int, 3> lo{};
-    std::array<int, 3> hi{};
-    for (int a = 0; a < 3; ++a) {
-      lo[static_cast<std::size_t>(a)] = static_cast<int>(std::floor((at.centre_m[a] - reach - grid.origin_m()[a]) / dx));
-      hi[static_cast<std::size_t>(a)] = static_cast<int>(std::ceil((at.centre_m[a] + reach - grid.origin_m()[a]) / dx));
-    }
-    double flux = 0.0;
-    double volume = 0.0;
-    for (int k = lo[2]; k <= hi[2]; ++k) {
-      for (int j = lo[1]; j <= hi[1]; ++j) {
-        for (int i = lo[0]; i <= hi[0]; ++i) {
-          const std::array<int, 3> unwrapped{i, j, k};
-          std::array<int, 3> c = unwrapped;
-          bool inside = true;
-          for (std::size_t a = 0; a < 3; ++a) {
-            if (a == 2) {   // this block's own planes only (each plane is summed by the rank that owns it)
-              const int n = grid.global_cells()[2];
-              int global = c[2] + grid.first_plane();
-              if (grid.periodic(2)) global = ((global % n) + n) % n;
-              c[2] = global - grid.first_plane();
-              inside = inside && c[2] >= 0 && c[2] < n_z;
-              continue;
-            }
-            const int n = grid.cells()[a];
-            if (grid.periodic(static_cast<int>(a))) c[a] = ((c[a] % n) + n) % n;
-            inside = inside && c[a] >= 0 && c[a] < n;
-          }
-          if (!inside || fraction(c[0], c[1], c[2]) <= 0.0) continue;
-          Vec3 d;
-          for (int a = 0; a < 3; ++a) d[a] = grid.origin_m()[a] + (unwrapped[static_cast<std::size_t>(a)] + 0.5) * dx - at.centre_m[a];
-          const double along = dot(d, direction);
-          if (std::abs(along) >= 1.5 * dx || norm(d - along * direction) > at.channel_radius_m + dx) continue;
-          const double e = eps(c[0], c[1], c[2]);
-          const Vec3 mixture = e * fluid_.cell_velocity(c[0], c[1], c[2]) + (1.0 - e) * us(c[0], c[1], c[2]);
-          flux += fraction(c[0], c[1], c[2]) * dot(mixture, direction);
-          volume += fraction(c[0], c[1], c[2]);
-        }
-      }
-    }
-    sums[5 * q + 3] = flux;
-    sums[5 * q + 4] = volume;
-  }
-  // Flux and volume summed over the ranks (the directions are every rank's already).
-  std::vector<double> parts(2 * keys.size());
-  for (std::size_t q = 0; q < keys.size(); ++q) {
-    parts[2 * q] = sums[5 * q + 3];
-    parts[2 * q + 1] = sums[5 * q + 4];
+    std::tie(parts[2 * q], parts[2 * q + 1]) = section_sums(fluid_, at, u / speed);
   }
   MPI_Allreduce(MPI_IN_PLACE, parts.data(), static_cast<int>(parts.size()), MPI_DOUBLE, MPI_SUM, comm);
   slab_flows_.clear();
   for (std::size_t q = 0; q < keys.size(); ++q) {
-    const Vec3 u{sums[5 * q], sums[5 * q + 1], sums[5 * q + 2]};
+    const Vec3 u{sums[3 * q], sums[3 * q + 1], sums[3 * q + 2]};
     ChannelFlow flow;
     const double speed = norm(u);
     if (speed > 0.0 && key_points_.at(keys[q]).channel_radius_m > 0.0) {

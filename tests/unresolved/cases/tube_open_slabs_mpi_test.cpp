@@ -17,6 +17,7 @@
 
 #include "common/config/config_file.hpp"
 #include "support/gathered_particles.hpp"
+#include "support/tight_solves.hpp"
 #include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/cases/tube_open.hpp"
 
@@ -40,14 +41,6 @@ TubeOpenConfig short_committed_case() {
   return c;
 }
 
-/// Every solve at 1e-12 (as tube_pries_slabs_mpi_test): the AMG differs per rank, so the runs agree to cond x
-/// tolerance, which round-off then bounds.
-CfdDemSetup tight(CfdDemSetup s) {
-  s.piso.pressure = {.tolerance = 1e-12, .rel_tol = 0.0, .max_iterations = 1000};
-  s.piso.momentum_tolerance = 1e-12;
-  return s;
-}
-
 struct Outcome {
   std::vector<std::vector<double>> rows;
   std::map<std::int64_t, std::array<hs::common::Vec3, 2>> particles;
@@ -55,7 +48,7 @@ struct Outcome {
 
 Outcome run(const TubeOpenConfig& c, MPI_Comm comm) {
   const OpenGeometryConfig g = open_geometry_of(c);
-  CfdDemSolvers solvers(tight(open_geometry_setup(g)), comm);
+  CfdDemSolvers solvers(hs::test::tight_solves(open_geometry_setup(g)), comm);
   OpenGeometryMeasurement m(g, "tube-open");
   CfdDemLoopOptions options;
   options.steps = kSteps;

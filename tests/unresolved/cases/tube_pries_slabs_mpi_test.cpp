@@ -19,6 +19,7 @@
 #include "common/errors.hpp"
 #include "common/io/vtk_image.hpp"
 #include "support/gathered_particles.hpp"
+#include "support/tight_solves.hpp"
 #include "unresolved/cases/cfd_dem_frames.hpp"
 #include "unresolved/cases/tube_pries.hpp"
 #include "unresolved/cases/tube_pries_measurement.hpp"
@@ -32,14 +33,6 @@ TubePriesConfig committed_case() {
   auto file = hs::common::ConfigFile::load(std::filesystem::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries/case.toml");
   (void)file->root().section("case").string("type");   // read as the CLI reads it
   return parse_tube_pries(*file, false);
-}
-
-/// The case's solvers with every solve at 1e-12: the AMG preconditioner differs per rank, so the runs agree to
-/// cond x tolerance, which round-off then bounds (the production 1e-6 would be the band instead).
-CfdDemSetup tight(CfdDemSetup s) {
-  s.piso.pressure = {.tolerance = 1e-12, .rel_tol = 0.0, .max_iterations = 1000};
-  s.piso.momentum_tolerance = 1e-12;
-  return s;
 }
 
 struct Outcome {
@@ -79,7 +72,7 @@ std::filesystem::path scratch(const std::string& name) {
 /// Runs 100 steps and writes the last step's ParaView frame in `frames` (on the slabs every rank takes part; rank 0
 /// of `comm` writes, where `frames` is not empty).
 Outcome run(const TubePriesConfig& c, MPI_Comm comm, const std::filesystem::path& frames) {
-  CfdDemSolvers solvers(tight(tube_pries_setup(c)), comm);
+  CfdDemSolvers solvers(hs::test::tight_solves(tube_pries_setup(c)), comm);
   TubePriesMeasurement m(c);
   m.prepare(solvers);
   m.start(solvers);
@@ -172,7 +165,7 @@ TEST(TubePriesOnSlabs, StoppedAndResumedOnTheSameRanksFollowsTheUninterruptedRun
   const TubePriesConfig c = committed_case();
   const std::filesystem::path dir = scratch("hs_tube_pries_slabs_restart");
   const auto rows_of = [&](long steps, const CfdDemRestart& restart) {
-    CfdDemSolvers solvers(tight(tube_pries_setup(c)), MPI_COMM_WORLD);
+    CfdDemSolvers solvers(hs::test::tight_solves(tube_pries_setup(c)), MPI_COMM_WORLD);
     TubePriesMeasurement m(c);
     return run_cfd_dem(solvers, m, loop_options(steps, restart)).rows;
   };
@@ -196,7 +189,7 @@ TEST(TubePriesOnSlabs, ResumingOnAnotherRankCountIsRefused) {
   const TubePriesConfig c = committed_case();
   const std::filesystem::path dir = scratch("hs_tube_pries_slabs_ranks");
   if (world_rank() == 0) {   // a one-rank run's checkpoint, resumed below on all ranks
-    CfdDemSolvers alone(tight(tube_pries_setup(c)), MPI_COMM_SELF);
+    CfdDemSolvers alone(hs::test::tight_solves(tube_pries_setup(c)), MPI_COMM_SELF);
     TubePriesMeasurement m(c);
     (void)run_cfd_dem(alone, m, loop_options(2, {.dir = dir, .resume = false, .rank = 0}));
   }
@@ -204,7 +197,7 @@ TEST(TubePriesOnSlabs, ResumingOnAnotherRankCountIsRefused) {
   if (world_size() == 1) {
     GTEST_SKIP() << "one rank resumes its own checkpoint";
   }
-  CfdDemSolvers solvers(tight(tube_pries_setup(c)), MPI_COMM_WORLD);
+  CfdDemSolvers solvers(hs::test::tight_solves(tube_pries_setup(c)), MPI_COMM_WORLD);
   TubePriesMeasurement m(c);
   try {
     (void)run_cfd_dem(solvers, m, loop_options(4, {.dir = dir, .resume = true, .rank = world_rank()}));
