@@ -73,7 +73,9 @@ void CfdDemCoupling::particle_forces() {
   const std::size_t n = p.n_owned();
   const bool correct = settings_.self_induced_correction && settings_.two_way;
   lift_reaction_N_.fill(Vec3{});
-  map_.locate(p);
+  // The particles have not moved since particles_to_grid located them (the fluid step moves none): its map holds.
+  if (!located_since_dem_) map_.locate(p);
+  located_since_dem_ = false;
   if (channel_) channel_->new_step();
   if (settings_.buoyancy_over_footprint) sum_over_footprints();
   // The rows sampled here: the owned ones; on slabs those (owned or remote ghosts) whose centre is in this block,
@@ -282,6 +284,7 @@ void CfdDemCoupling::fill_buoyancy_density() {
 void CfdDemCoupling::fill_fields() {
   ParticleStore& p = dem_.particles();
   map_.locate(p);
+  located_since_dem_ = true;
   const bool refresh = steps_ % settings_.refresh_every == 0;
   const double dt = fluid_.settings().dt_s;
   if (refresh && settings_.void_fraction_feedback) {
@@ -386,6 +389,7 @@ void CfdDemCoupling::dem_substeps() {
     if (slabs_ != nullptr) dem_.initialize();   // the ghosts, whose markers and fluid samples count too
     particle_forces();
   }
+  located_since_dem_ = false;   // the DEM moves, re-sorts and migrates the particles
   ParticleStore& p = dem_.particles();
   for (auto& col : p.drag_impulse_N_s()) std::fill(col.begin(), col.end(), 0.0);
   const double dt = fluid_.settings().dt_s;

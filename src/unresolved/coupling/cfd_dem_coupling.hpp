@@ -228,6 +228,7 @@ class CfdDemCoupling {
   DragLimitedStep last_drag_limited_;
   std::vector<SelfMobility> self_mobility_;   // one per sphere diameter in the run
   std::unique_ptr<ChannelFrame> channel_;       // the channel frame's memo (closure_frame = channel)
+  bool located_since_dem_ = false;             // map_ located by fill_fields() and no DEM step since
   std::unique_ptr<DiffusionSmoothing> smoothing_;   // smoothing_length_m > 0
   std::unique_ptr<FvmGrid> whole_grid_;   // on slabs, for the self-mobility tables (self_induced_correction)
   BlockField<hs::common::Vec3> buoyancy_density_;   // buoyancy_over_footprint: -grad p + div tau at cell centres, N/m^3
