@@ -54,26 +54,46 @@ std::string header_line(const fs::path& file, const std::string& tag) {
   return text.substr(at, text.find('\n', at) - at);
 }
 
+/// `run --quick` of a committed case folder on one rank and on two, into fresh folders NAME_one and NAME_two.
+struct QuickRuns {
+  fs::path one, two;
+  hs::test::CommandResult alone, slabs;
+  nlohmann::json s1, s2;   // their summary.json (null when a run wrote none)
+};
+
+QuickRuns quick_on_one_and_two(const std::string& case_folder, const std::string& name) {
+  const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved" / case_folder;
+  QuickRuns r{.one = fresh_dir(name + "_one"), .two = fresh_dir(name + "_two"), .alone = {}, .slabs = {}, .s1 = {}, .s2 = {}};
+  r.alone = run_on_ranks(1, "run --quiet --quick " + case_dir.string() + " --output " + r.one.string());
+  r.slabs = run_on_ranks(2, "run --quiet --quick " + case_dir.string() + " --output " + r.two.string());
+  if (fs::exists(r.one / "summary.json")) r.s1 = nlohmann::json::parse(slurp(r.one / "summary.json"));
+  if (fs::exists(r.two / "summary.json")) r.s2 = nlohmann::json::parse(slurp(r.two / "summary.json"));
+  return r;
+}
+
+/// results.KEY of the two runs within `relative` (printed).
+void expect_results_close(const QuickRuns& r, const char* key, double relative) {
+  const double a = r.s1.at("results").at(key).get<double>();
+  const double b = r.s2.at("results").at(key).get<double>();
+  std::printf("%s: one rank %.9g, two ranks %.9g (relative %.2e)\n", key, a, b, std::abs(b - a) / std::abs(a));
+  EXPECT_NEAR(b, a, relative * std::abs(a)) << key;
+}
+
 TEST(DistributedCli, TubePriesOnTwoRanksRunsLikeOneAndResumesOnlyOnTwo) {
   const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries";
-  const fs::path one = fresh_dir("one"), two = fresh_dir("two");
-  const auto alone = run_on_ranks(1, "run --quiet --quick " + case_dir.string() + " --output " + one.string());
-  const auto slabs = run_on_ranks(2, "run --quiet --quick " + case_dir.string() + " --output " + two.string());
-  ASSERT_EQ(slabs.code, alone.code) << slabs.output;
-  const auto s1 = nlohmann::json::parse(slurp(one / "summary.json"));
-  const auto s2 = nlohmann::json::parse(slurp(two / "summary.json"));
+  const QuickRuns r = quick_on_one_and_two("tube-pries", "pries_case");
+  ASSERT_EQ(r.slabs.code, r.alone.code) << r.slabs.output;
+  const fs::path& one = r.one;
+  const fs::path& two = r.two;
+  const nlohmann::json& s1 = r.s1;
+  const nlohmann::json& s2 = r.s2;
   EXPECT_EQ(s2.at("mpi_ranks"), 2);
   EXPECT_EQ(s2.at("results").at("rbc_count"), s1.at("results").at("rbc_count"));
   EXPECT_EQ(s2.at("numerics").at("cfd_steps"), s1.at("numerics").at("cfd_steps"));
   // The case solves pressure and momentum to 1e-6 relative residual and the AMG differs with the rank count, so the
   // two runs part by up to that tolerance; over the 20 steps of --quick 1e-5 relative (measured 5.7e-8 for Ht_d,
   // 2.3e-7 for mu_rel, printed below).
-  for (const char* key : {"discharge_hematocrit", "relative_apparent_viscosity"}) {
-    const double a = s1.at("results").at(key).get<double>();
-    const double b = s2.at("results").at(key).get<double>();
-    std::printf("%s: one rank %.9g, two ranks %.9g (relative %.2e)\n", key, a, b, std::abs(b - a) / std::abs(a));
-    EXPECT_NEAR(b, a, 1e-5 * std::abs(a)) << key;
-  }
+  for (const char* key : {"discharge_hematocrit", "relative_apparent_viscosity"}) expect_results_close(r, key, 1e-5);
   // One frame of the whole tube, as one rank writes it.
   const std::string frame = "vtk/fields_0000020.vti";
   ASSERT_TRUE(fs::exists(two / frame));
@@ -102,24 +122,14 @@ std::vector<std::vector<double>> csv_numbers(const fs::path& file) {
 }
 
 TEST(DistributedCli, TubeOpenOnTwoRanksRunsLikeOne) {
-  const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-open";
-  const fs::path one = fresh_dir("open_one"), two = fresh_dir("open_two");
-  const auto alone = run_on_ranks(1, "run --quiet --quick " + case_dir.string() + " --output " + one.string());
-  const auto slabs = run_on_ranks(2, "run --quiet --quick " + case_dir.string() + " --output " + two.string());
-  ASSERT_EQ(slabs.code, alone.code) << slabs.output;
-  const auto s1 = nlohmann::json::parse(slurp(one / "summary.json"));
-  const auto s2 = nlohmann::json::parse(slurp(two / "summary.json"));
-  EXPECT_EQ(s2.at("mpi_ranks"), 2);
+  const QuickRuns r = quick_on_one_and_two("tube-open", "open");
+  ASSERT_EQ(r.slabs.code, r.alone.code) << r.slabs.output;
+  EXPECT_EQ(r.s2.at("mpi_ranks"), 2);
   for (const char* key : {"cells_injected", "cells_removed", "cells_present"}) {
-    EXPECT_EQ(s2.at("results").at(key), s1.at("results").at(key)) << key;
+    EXPECT_EQ(r.s2.at("results").at(key), r.s1.at("results").at(key)) << key;
   }
   // The case's 1e-6 solves with an AMG that differs with the rank count (as tube-pries above): 1e-5 relative.
-  for (const char* key : {"domain_hematocrit", "mean_di", "rbc_volume_injected_m3"}) {
-    const double a = s1.at("results").at(key).get<double>();
-    const double b = s2.at("results").at(key).get<double>();
-    std::printf("tube-open %s: one rank %.9g, two ranks %.9g\n", key, a, b);
-    EXPECT_NEAR(b, a, 1e-5 * std::abs(a)) << key;
-  }
+  for (const char* key : {"domain_hematocrit", "mean_di", "rbc_volume_injected_m3"}) expect_results_close(r, key, 1e-5);
 }
 
 TEST(DistributedCli, PriesTableOnTwoRanksIsOneRanksTable) {
