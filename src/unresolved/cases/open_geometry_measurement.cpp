@@ -91,8 +91,6 @@ void OpenGeometryMeasurement::exchange_cells(CfdDemSolvers& run) {
   }
   traffic_->exchange(run.dem(), fluid.settings().dt_s,
                      {.flow_rate_m3_s = q_blood, .velocity_m_s = [&fluid](const hs::common::Vec3& x) { return fluid.velocity_at(x); }});
-  // On slabs an edit rebuilt the DEM's ghosts, without the drag impulses and lifts of the sub-steps just taken.
-  if (run.slabs() != nullptr) run.coupling().refresh_ghosts();
 }
 
 void OpenGeometryMeasurement::remember_volumes(const std::vector<OpeningCounters>& counters) {

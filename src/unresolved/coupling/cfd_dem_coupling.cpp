@@ -405,7 +405,6 @@ void CfdDemCoupling::dem_substeps() {
   for (int s = 0; s < n; ++s) dem_.step();
   last_substeps_ = n;
   total_substeps_ += n;
-  if (slabs_ != nullptr) refresh_ghosts();
 }
 
 void CfdDemCoupling::refresh_ghosts() {
@@ -420,6 +419,9 @@ void CfdDemCoupling::refresh_ghosts() {
 }
 
 void CfdDemCoupling::particles_to_grid() {
+  // Here, not at the end of the sub-steps: a case may edit the particles in between (cells in and out at openings),
+  // and on slabs the DEM's rebuild after an edit makes ghosts without the sub-steps' impulses and lifts.
+  refresh_ghosts();
   fill_fields();
   if (settings_.two_way) exchange_drag();
   fill_cell_field_ghosts(fluid_.grid(), fluid_.explicit_force_density_N_m3());

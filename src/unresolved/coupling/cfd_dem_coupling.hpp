@@ -164,14 +164,11 @@ class CfdDemCoupling {
   /// The closures, for their usage counters (evaluations, how many had an input outside the validity box).
   [[nodiscard]] const CouplingClosures& closures() const { return closures_; }
 
-  /// On slabs (collective; nothing on one rank), after the DEM sub-steps and again after a case edits the particles
-  /// before particles_to_grid (cells in and out at openings: the DEM rebuilds its ghosts): the remote ghosts'
-  /// positions, velocities and the coupling columns the deposit reads (drag coefficient, drag impulse, lift) from
-  /// their owners.
-  void refresh_ghosts();
-
  private:
   void particle_forces();
+  /// On slabs (nothing on one rank), first thing in particles_to_grid: the remote ghosts' positions, velocities and
+  /// the coupling columns the deposit reads (drag coefficient, drag impulse, lift) from their owners.
+  void refresh_ghosts();
   /// Sums over the ranks on slabs (identity on one).
   [[nodiscard]] hs::common::Vec3 summed(hs::common::Vec3 v) const;
   [[nodiscard]] double summed(double x) const;
