@@ -8,6 +8,8 @@
 
 #include <omp.h>
 
+#include <fmt/format.h>
+
 #include "common/errors.hpp"
 #include "unresolved/coupling/diffusion_smoothing.hpp"
 
@@ -54,7 +56,12 @@ const std::array<Vec3, kMarkersPerSphere>& divided_markers() {
 }
 
 DividedMap::DividedMap(const FvmGrid& grid)
-    : grid_(grid), cell_volume_m3_(std::pow(grid.dx_m(), 3)), slabs_(grid.slabs() != nullptr) {}
+    : grid_(grid), cell_volume_m3_(std::pow(grid.dx_m(), 3)), slabs_(grid.slabs() != nullptr) {
+  if (grid.fluid_fractions().data().size() >= kNowhere) {   // the flat indices are stored in 32 bits
+    throw hs::common::ConfigError(fmt::format("coupling: {} FVM cells on one rank; at most {} (run on more MPI ranks)",
+                                              grid.fluid_fractions().data().size(), kNowhere - 1));
+  }
+}
 
 std::optional<std::array<long, 3>> DividedMap::global_cell(const Vec3& x_m) const {
   const hs::common::Box3& box = grid_.box_m();
@@ -125,6 +132,62 @@ std::size_t DividedMap::marker_cell(const Vec3& x, const std::array<long, 3>& ce
   return has_fluid(*g) ? here : centre_here;
 }
 
+void DividedMap::locate_markers(std::size_t i, const Vec3& x, double r, const std::array<long, 3>& centre) {
+  const auto& markers = divided_markers();
+  for (int m = 0; m < kMarkersPerSphere; ++m) {
+    const std::size_t c = marker_cell(x + r * markers[static_cast<std::size_t>(m)], centre);
+    cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)] = c == kElsewhere ? kNowhere : static_cast<std::uint32_t>(c);
+  }
+}
+
+bool DividedMap::locate_markers_inside(std::size_t i, const Vec3& x, double r, const std::array<long, 3>& centre) {
+  const hs::common::Box3& box = grid_.box_m();
+  const double dx = grid_.dx_m();
+  const auto& n = grid_.cells();
+  const auto& n_global = grid_.global_cells();
+  // The cube's lowest and highest cells along each axis, by global_cell()'s arithmetic (monotone in the position, so
+  // every marker, within the unit sphere, falls between them): inside the box, and along z in this block's planes.
+  for (int a = 0; a < 3; ++a) {
+    const auto u = static_cast<std::size_t>(a);
+    const double lo = (x[a] - r - box.lo[a]) / dx;
+    const double hi = (x[a] + r - box.lo[a]) / dx;
+    if (!(lo >= 0.0) || !(hi < static_cast<double>(n_global[u]))) return false;
+    if (a == 2 && (static_cast<long>(lo) < grid_.first_plane() || static_cast<long>(hi) >= grid_.first_plane() + n[2])) return false;
+  }
+  const std::size_t centre_here = local_index(centre);
+  const BlockField<double>& ff = grid_.fluid_fractions();
+  const auto& markers = divided_markers();
+  for (int m = 0; m < kMarkersPerSphere; ++m) {
+    const Vec3 p = x + r * markers[static_cast<std::size_t>(m)];
+    const auto ci = static_cast<int>((p[0] - box.lo[0]) / dx);
+    const auto cj = static_cast<int>((p[1] - box.lo[1]) / dx);
+    const auto ck = static_cast<int>(static_cast<long>((p[2] - box.lo[2]) / dx) - grid_.first_plane());
+    const std::size_t here = ff.index(ci, cj, ck);
+    cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)] = static_cast<std::uint32_t>(ff[here] > 0.0 ? here : centre_here);
+  }
+  return true;
+}
+
+void DividedMap::sort_rows_by_id(const std::vector<std::int64_t>& id) {
+  const bool fits = std::all_of(by_id_.begin(), by_id_.end(), [&](std::uint32_t i) { return id[i] >= 0 && id[i] <= INT64_C(0xffffffff); });
+  if (!fits) {
+    std::sort(by_id_.begin(), by_id_.end(), [&](std::uint32_t a, std::uint32_t b) { return id[a] != id[b] ? id[a] < id[b] : a < b; });
+    return;
+  }
+  // by_id_ holds the rows ascending; each stable pass keeps that order among equal keys (one id twice: its images
+  // on both sides of one neighbour), so the result is sorted by (id, row).
+  id_scratch_.resize(by_id_.size());
+  std::vector<std::uint32_t> count(65537);
+  for (const int shift : {0, 16}) {
+    std::fill(count.begin(), count.end(), 0);
+    const auto digit = [&](std::uint32_t row) { return (static_cast<std::uint64_t>(id[row]) >> shift) & 0xffffu; };
+    for (const std::uint32_t row : by_id_) ++count[digit(row) + 1];
+    for (std::size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+    for (const std::uint32_t row : by_id_) id_scratch_[count[digit(row)]++] = row;
+    by_id_.swap(id_scratch_);
+  }
+}
+
 void DividedMap::locate(const ParticleStore& particles) {
   n_owned_ = particles.n_owned();
   // The rows this block deposits, by id: its particles and, on slabs, the neighbours' (a local periodic image is not
@@ -136,17 +199,13 @@ void DividedMap::locate(const ParticleStore& particles) {
     by_id_.push_back(static_cast<std::uint32_t>(i));
     largest_radius = std::max(largest_radius, particles.radius_m()[i]);
   }
-  const auto& id = particles.id();
-  std::sort(by_id_.begin(), by_id_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return id[a] != id[b] ? id[a] < id[b] : a < b;   // one id twice: its images on both sides of one neighbour
-  });
+  sort_rows_by_id(particles.id());
   if (slabs_) {   // the neighbours' cells a marker of a sphere centred in this block can reach (0.9 r), and one more
     const int planes = static_cast<int>(std::ceil(largest_radius / grid_.dx_m())) + 1;
     if (planes > cached_planes_) cache_neighbour_fluid(planes);
   }
-  cells_.assign(particles.size() * kMarkersPerSphere, kElsewhere);
+  cells_.assign(particles.size() * kMarkersPerSphere, kNowhere);
   const auto& pos = particles.position_m();
-  const auto& markers = divided_markers();
   const auto n = static_cast<std::int64_t>(by_id_.size());
   bool lost = false;
 #pragma omp parallel for schedule(static) reduction(|| : lost) if (n > 4096)
@@ -158,10 +217,8 @@ void DividedMap::locate(const ParticleStore& particles) {
       lost = lost || i < n_owned_;   // thrown below: an exception must not leave an OpenMP region
       continue;
     }
-    for (int m = 0; m < kMarkersPerSphere; ++m) {
-      cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)] =
-          marker_cell(x + particles.radius_m()[i] * markers[static_cast<std::size_t>(m)], *centre);
-    }
+    const double r = particles.radius_m()[i];
+    if (!locate_markers_inside(i, x, r, *centre)) locate_markers(i, x, r, *centre);
   }
   if (lost) throw hs::common::NumericalError("coupling: a particle centre left the fluid grid");
   sort_by_cell(grid_.fluid_fractions().data().size());
@@ -172,8 +229,9 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
   // counts a contiguous range of k; a cell's markers from thread 0 come first, then thread 1's, ..., so the order is
   // ascending k at any thread count. Markers left to a neighbour are skipped.
   const std::size_t n_markers = by_id_.size() * kMarkersPerSphere;
-  const auto cell_of_marker = [&](std::size_t k) {
-    return cells_[by_id_[k / kMarkersPerSphere] * std::size_t{kMarkersPerSphere} + k % kMarkersPerSphere];
+  const auto cell_of_marker = [&](std::size_t k) -> std::size_t {
+    const std::uint32_t c = cells_[by_id_[k / kMarkersPerSphere] * std::size_t{kMarkersPerSphere} + k % kMarkersPerSphere];
+    return c == kNowhere ? kElsewhere : c;
   };
   const int n_threads = n_markers > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
   std::vector<std::vector<std::uint32_t>> count(static_cast<std::size_t>(n_threads));

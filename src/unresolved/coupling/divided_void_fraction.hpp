@@ -48,7 +48,10 @@ class DividedMap {
   /// A marker that falls in another block's cell (cell() on slabs only).
   static constexpr std::size_t kElsewhere = static_cast<std::size_t>(-1);
   /// Cell flat index of marker m of the store's row i (owned, or on slabs a remote ghost), or kElsewhere.
-  [[nodiscard]] std::size_t cell(std::size_t i, int m) const { return cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)]; }
+  [[nodiscard]] std::size_t cell(std::size_t i, int m) const {
+    const std::uint32_t c = cells_[i * kMarkersPerSphere + static_cast<std::size_t>(m)];
+    return c == kNowhere ? kElsewhere : c;
+  }
 
   /// Whether row i's centre lies in one of this block's cells (every owned row on one rank; on slabs an owned
   /// particle may have drifted into a neighbour's plane since the last rebuild, and a remote ghost into this block's):
@@ -90,6 +93,14 @@ class DividedMap {
   [[nodiscard]] bool has_fluid(const std::array<long, 3>& g) const;
   /// The flat index of global cell g if it is one of this block's, else kElsewhere.
   [[nodiscard]] std::size_t local_index(const std::array<long, 3>& g) const;
+  /// Where row i's markers fall, for a sphere at x (radius r) whose centre's global cell is `centre`.
+  void locate_markers(std::size_t i, const hs::common::Vec3& x, double r, const std::array<long, 3>& centre);
+  /// The same when the sphere's bounding cube lies in this block's cells, inside the box (no wrap, nothing lumped
+  /// for leaving it): each marker's cell from its position by the same arithmetic as global_cell(), minus the checks.
+  /// False (nothing written) when the cube does not.
+  bool locate_markers_inside(std::size_t i, const hs::common::Vec3& x, double r, const std::array<long, 3>& centre);
+  /// by_id_ sorted by (id, row): a stable two-pass radix sort on the id's 32 bits when every id fits them.
+  void sort_rows_by_id(const std::vector<std::int64_t>& id);
   /// Caches which cells have fluid in the `planes` planes on either side of this block (slabs only).
   void cache_neighbour_fluid(int planes);
   void sort_by_cell(std::size_t n_cells);
@@ -101,8 +112,12 @@ class DividedMap {
   double cell_volume_m3_;
   bool slabs_ = false;
   std::size_t n_owned_ = 0;
-  std::vector<std::size_t> cells_;       // per store row and marker; kElsewhere where not here (or not located)
+  // Per store row and marker: the cell's flat index, kNowhere where not here (or not located). 32 bits: the map is
+  // written and read several times a step, and a million spheres' markers are 116 MB at this width.
+  static constexpr std::uint32_t kNowhere = UINT32_MAX;
+  std::vector<std::uint32_t> cells_;
   std::vector<std::uint32_t> by_id_;     // the rows located, by ascending id
+  std::vector<std::uint32_t> id_scratch_;   // sort_rows_by_id()'s second buffer
   // The markers sorted by cell (a stable counting sort in by_id_ order): the rows of cell c's markers are
   // rows_[start_[c] .. start_[c + 1]).
   std::vector<std::uint32_t> start_;
