@@ -53,6 +53,9 @@ constexpr int open_tube_repetitions = 5;   // timed CFD steps per open-tube size
 constexpr const char* periodic_sizes_env = "HS_BENCH_CFDDEM_SIZES";
 // Set to a JSON this bench wrote: its periodic sizes are taken from it, not measured (see the file comment).
 constexpr const char* archive_env = "HS_BENCH_CFDDEM_ARCHIVE";
+// Set to a number of timed CFD steps per periodic size instead of 3 (development: two runs with different counts
+// difference away the set-up, e.g. the messages per step under Open MPI's monitoring, bench/results/README.md).
+constexpr const char* timed_steps_env = "HS_BENCH_CFDDEM_TIMED_STEPS";
 // Set only in the scaling jobs scale_to_two_ranks() starts: measure the sizes, keys suffixed "_npN", nothing else.
 constexpr const char* scaling_job_env = "HS_BENCH_CFDDEM_SCALING_JOB";
 
@@ -225,15 +228,29 @@ std::string size_key(long n) {
 }
 
 /// One periodic size on this job's ranks: printed by rank 0, its keys (with `suffix`) into j.
+/// The timed CFD steps per periodic size: 3, or timed_steps_env.
+int timed_steps() {
+  const char* v = std::getenv(timed_steps_env);
+  if (v == nullptr || *v == '\0') return 3;
+  char* end = nullptr;
+  const long n = std::strtol(v, &end, 10);
+  if (*end != '\0' || n < 1 || n > 1000) {
+    throw hs::common::ConfigError(fmt::format("{}={}: a number of timed CFD steps, 1 to 1000", timed_steps_env, v));
+  }
+  return static_cast<int>(n);
+}
+
+/// One periodic size on this job's ranks: printed by rank 0, its keys (with `suffix`) into j.
 void measure_size(long n, const Ranks& ranks, const std::string& suffix, nlohmann::json& j) {
-  const Measured m = measure(n, 3);
+  const int steps = timed_steps();
+  const Measured m = measure(n, steps);
   const std::string key = size_key(n);
   if (ranks.root()) {
-    fmt::print("  {:>8} RBCs{}: {:.3f} s per CFD step (median of 3, n_coupling = {}, {:.1f} DEM steps per CFD step, {} cells), "
-               "peak RSS {:.2f} GiB{}; stages (s, 3 steps):", n,
+    fmt::print("  {:>8} RBCs{}: {:.3f} s per CFD step (median of {}, n_coupling = {}, {:.1f} DEM steps per CFD step, {} cells), "
+               "peak RSS {:.2f} GiB{}; stages (s, {} steps):", n,
                suffix.empty() ? "" : fmt::format(" on {} rank(s) x {} thread(s)", ranks.size, omp_get_max_threads()),
-               m.s_per_cfd_step, m.n_coupling, m.mean_substeps, m.cells, m.peak_rss_gib,
-               ranks.size > 1 ? fmt::format(" ({:.2f} the largest rank)", m.peak_rss_gib_per_rank) : "");
+               m.s_per_cfd_step, steps, m.n_coupling, m.mean_substeps, m.cells, m.peak_rss_gib,
+               ranks.size > 1 ? fmt::format(" ({:.2f} the largest rank)", m.peak_rss_gib_per_rank) : "", steps);
     for (std::size_t s = 0; s < stage_names.size(); ++s) fmt::print(" {} {:.3f}", stage_names[s], m.stage_seconds[s]);
     fmt::print("; AMG set-ups {} reuses {}\n", m.amg_setups, m.amg_reuses);
     std::fflush(stdout);

@@ -144,6 +144,17 @@ def main():
         check("966 rows" in p.stdout, "hs_tables.py counts the archive's 966 rows")
         out = os.path.join(tmp, "synthetic.csv")
         run([t("make_synthetic_dataset.py"), "--rows", "5", "--out", out], "make_synthetic_dataset.py writes a table")
+        # The committed scaling model recomputed from its committed traffic and bench times (no MPI run): the same table.
+        results = os.path.join(ROOT, "bench", "results")
+        committed = os.path.join(results, "2026-12-06_cfddem_scaling_model.json")
+        again = os.path.join(tmp, "scaling_model.json")
+        run([t("cfddem_scaling_model.py"), "--hemoscale", "unused", "--bench-json",
+             os.path.join(results, "2026-12-06_cfddem_locate.json"), "--reuse", committed, "--json", again],
+            "cfddem_scaling_model.py on the committed traffic")
+        with open(committed) as f, open(again) as g:
+            want, got = json.load(f)["model"], json.load(g)["model"]
+        check(want.keys() == got.keys() and all(abs(want[k]["s_per_cfd_step"] - got[k]["s_per_cfd_step"]) <= 1e-12 * want[k]["s_per_cfd_step"]
+                                                for k in want), "cfddem_scaling_model.py reproduces the committed model")
     print(f"{len(failures)} failures")
     return 1 if failures else 0
 
