@@ -225,44 +225,47 @@ void DividedMap::locate(const ParticleStore& particles) {
 }
 
 void DividedMap::sort_by_cell(std::size_t n_cells) {
-  // Counting sort, stable in the marker's place k in id order (particle by_id_[k / 29], marker k % 29): each thread
-  // counts a contiguous range of k; a cell's markers from thread 0 come first, then thread 1's, ..., so the order is
+  // Counting sort, stable in the marker's place k = 29 q + m in id order (particle by_id_[q], marker m): each thread
+  // counts a contiguous range of q; a cell's markers from thread 0 come first, then thread 1's, ..., so the order is
   // ascending k at any thread count. Markers left to a neighbour are skipped.
-  const std::size_t n_markers = by_id_.size() * kMarkersPerSphere;
-  const auto cell_of_marker = [&](std::size_t k) -> std::size_t {
-    const std::uint32_t c = cells_[by_id_[k / kMarkersPerSphere] * std::size_t{kMarkersPerSphere} + k % kMarkersPerSphere];
-    return c == kNowhere ? kElsewhere : c;
-  };
-  const int n_threads = n_markers > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
-  std::vector<std::vector<std::uint32_t>> count(static_cast<std::size_t>(n_threads));
+  const std::size_t n_particles = by_id_.size();
+  const int n_threads = n_particles * kMarkersPerSphere > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
+  thread_counts_.resize(static_cast<std::size_t>(n_threads));   // kept: a million cells' counts would fault in anew
   start_.assign(n_cells + 1, 0);
+  const auto for_each_marker = [&](std::size_t lo, std::size_t hi, auto&& f) {
+    for (std::size_t q = lo; q < hi; ++q) {
+      const std::uint32_t row = by_id_[q];
+      const std::uint32_t* cells = &cells_[std::size_t{row} * kMarkersPerSphere];
+      for (int m = 0; m < kMarkersPerSphere; ++m) {
+        if (cells[m] != kNowhere) f(cells[m], row);
+      }
+    }
+  };
 #pragma omp parallel num_threads(n_threads)
   {
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    const std::size_t lo = n_markers * t / count.size(), hi = n_markers * (t + 1) / count.size();
-    std::vector<std::uint32_t>& mine = count[t];
+    const std::size_t lo = n_particles * t / static_cast<std::size_t>(n_threads);
+    const std::size_t hi = n_particles * (t + 1) / static_cast<std::size_t>(n_threads);
+    std::vector<std::uint32_t>& mine = thread_counts_[t];
     mine.assign(n_cells, 0);
-    for (std::size_t k = lo; k < hi; ++k) {
-      if (const std::size_t c = cell_of_marker(k); c != kElsewhere) ++mine[c];
-    }
+    for_each_marker(lo, hi, [&](std::uint32_t c, std::uint32_t) { ++mine[c]; });
 #pragma omp barrier
 #pragma omp single
     {
       std::uint32_t total = 0;
       for (std::size_t c = 0; c < n_cells; ++c) {
         start_[c] = total;
-        for (auto& per_thread : count) {   // becomes each thread's first slot in cell c
-          const std::uint32_t n_here = per_thread[c];
-          per_thread[c] = total;
+        for (int u = 0; u < n_threads; ++u) {   // becomes each thread's first slot in cell c
+          std::uint32_t& n_here = thread_counts_[static_cast<std::size_t>(u)][c];
+          const std::uint32_t first = total;
           total += n_here;
+          n_here = first;
         }
       }
       start_[n_cells] = total;
       rows_.resize(total);
     }
-    for (std::size_t k = lo; k < hi; ++k) {
-      if (const std::size_t c = cell_of_marker(k); c != kElsewhere) rows_[mine[c]++] = by_id_[k / kMarkersPerSphere];
-    }
+    for_each_marker(lo, hi, [&](std::uint32_t c, std::uint32_t row) { rows_[mine[c]++] = row; });
   }
   occupied_.clear();
   for (std::size_t c = 0; c < n_cells; ++c) {

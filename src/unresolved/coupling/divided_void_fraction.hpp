@@ -122,6 +122,7 @@ class DividedMap {
   // rows_[start_[c] .. start_[c + 1]).
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> rows_;
+  std::vector<std::vector<std::uint32_t>> thread_counts_;   // sort_by_cell()'s per-thread counts, kept between calls
   std::vector<std::size_t> occupied_;   // cells holding a marker, ascending
   // Slabs: fluid flags of the cached planes below (plane first - 1 - d at d) and above (first + n + d), x fastest.
   int cached_planes_ = 0;
