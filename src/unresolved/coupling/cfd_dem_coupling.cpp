@@ -149,8 +149,8 @@ void CfdDemCoupling::particle_forces() {
   }
   if (closures_.lift) {   // the fluid gets minus the lift, spread over the sphere's markers
     const auto& lift_col = p.lift_force_N();
-    map_.for_each_cell([&](std::size_t c, std::size_t i) {
-      lift_reaction_N_[c] -= Vec3{lift_col[0][i], lift_col[1][i], lift_col[2][i]} / kMarkersPerSphere;
+    map_.for_each_cell([&](std::size_t c, std::size_t i, int markers) {
+      lift_reaction_N_[c] -= (static_cast<double>(markers) / kMarkersPerSphere) * Vec3{lift_col[0][i], lift_col[1][i], lift_col[2][i]};
     });
   }
 }
@@ -305,9 +305,9 @@ void CfdDemCoupling::fill_fields() {
   BlockField<double> ksl(fluid_.grid().cells(), 0.0);
   BlockField<Vec3>& us = fluid_.particle_velocity_m_s();
   us.fill(Vec3{});
-  constexpr double w = 1.0 / kMarkersPerSphere;
   const ParticleStore& cp = p;
-  map_.for_each_cell([&](std::size_t c, std::size_t i) {
+  map_.for_each_cell([&](std::size_t c, std::size_t i, int markers) {
+    const double w = static_cast<double>(markers) / kMarkersPerSphere;   // the sphere's share in the cell
     weight[c] += w;
     us[c] += w * particle_velocity(cp, i);
     ksl[c] += w * cp.drag_coefficient_N_s_m()[i] / map_.fluid_volume_m3(c);
@@ -316,7 +316,8 @@ void CfdDemCoupling::fill_fields() {
     // Ksl and the momentum density Ksl Us are what the implicit drag puts on the grid: smooth both (conserved), and
     // Us becomes their ratio, so Ksl (Us - u) keeps its total.
     BlockField<Vec3> momentum(fluid_.grid().cells(), Vec3{});
-    map_.for_each_cell([&](std::size_t c, std::size_t i) {
+    map_.for_each_cell([&](std::size_t c, std::size_t i, int markers) {
+      const double w = static_cast<double>(markers) / kMarkersPerSphere;
       momentum[c] += w * cp.drag_coefficient_N_s_m()[i] / map_.fluid_volume_m3(c) * particle_velocity(cp, i);
     });
     smoothing_->smooth_together({&ksl}, {&momentum});   // one solve for the four columns
@@ -347,11 +348,13 @@ void CfdDemCoupling::exchange_drag() {
   // Each cell adds its markers' impulses first, then the share of the imbalance of earlier steps given back through
   // the particles' cells: the order of the serial loops this replaces.
   const Vec3 share = particles > 0 ? stats_.pending_N_s / static_cast<double>(particles * kMarkersPerSphere) : Vec3{};
-  map_.for_each_cell([&](std::size_t c, std::size_t i) {
-    f[c] -= Vec3{imp[0][i], imp[1][i], imp[2][i]} / (kMarkersPerSphere * map_.fluid_volume_m3(c) * dt);
+  map_.for_each_cell([&](std::size_t c, std::size_t i, int markers) {
+    f[c] -= (static_cast<double>(markers) / kMarkersPerSphere) * Vec3{imp[0][i], imp[1][i], imp[2][i]} / (map_.fluid_volume_m3(c) * dt);
   });
   if (particles > 0) {
-    map_.for_each_cell([&](std::size_t c, std::size_t) { f[c] -= share / (map_.fluid_volume_m3(c) * dt); });
+    map_.for_each_cell([&](std::size_t c, std::size_t, int markers) {
+      f[c] -= static_cast<double>(markers) * share / (map_.fluid_volume_m3(c) * dt);
+    });
   }
   const BlockField<double>& ksl = fluid_.implicit_coefficient_kg_m3_s();
   const BlockField<Vec3>& us = fluid_.particle_velocity_m_s();

@@ -225,20 +225,33 @@ void DividedMap::locate(const ParticleStore& particles) {
 }
 
 void DividedMap::sort_by_cell(std::size_t n_cells) {
-  // Counting sort, stable in the marker's place k = 29 q + m in id order (particle by_id_[q], marker m): each thread
-  // counts a contiguous range of q; a cell's markers from thread 0 come first, then thread 1's, ..., so the order is
-  // ascending k at any thread count. Markers left to a neighbour are skipped.
+  // Counting sort of the (sphere, cell) pairs, stable in the sphere's place q in id order (particle by_id_[q]): each
+  // thread counts a contiguous range of q; a cell's pairs from thread 0 come first, then thread 1's, ..., so the order
+  // is ascending q at any thread count. Markers left to a neighbour are skipped.
   const std::size_t n_particles = by_id_.size();
   const int n_threads = n_particles * kMarkersPerSphere > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
   thread_counts_.resize(static_cast<std::size_t>(n_threads));   // kept: a million cells' counts would fault in anew
   start_.assign(n_cells + 1, 0);
-  const auto for_each_marker = [&](std::size_t lo, std::size_t hi, auto&& f) {
+  // f(cell, row, markers) for each distinct cell of the sphere's markers (in the order they first appear).
+  const auto for_each_pair = [&](std::size_t lo, std::size_t hi, auto&& f) {
+    std::array<std::uint32_t, kMarkersPerSphere> cell{};
+    std::array<std::uint8_t, kMarkersPerSphere> count{};
     for (std::size_t q = lo; q < hi; ++q) {
       const std::uint32_t row = by_id_[q];
       const std::uint32_t* cells = &cells_[std::size_t{row} * kMarkersPerSphere];
+      int distinct = 0;
       for (int m = 0; m < kMarkersPerSphere; ++m) {
-        if (cells[m] != kNowhere) f(cells[m], row);
+        if (cells[m] == kNowhere) continue;
+        int d = 0;
+        while (d < distinct && cell[static_cast<std::size_t>(d)] != cells[m]) ++d;
+        if (d == distinct) {
+          cell[static_cast<std::size_t>(d)] = cells[m];
+          count[static_cast<std::size_t>(d)] = 0;
+          ++distinct;
+        }
+        ++count[static_cast<std::size_t>(d)];
       }
+      for (int d = 0; d < distinct; ++d) f(cell[static_cast<std::size_t>(d)], row, count[static_cast<std::size_t>(d)]);
     }
   };
 #pragma omp parallel num_threads(n_threads)
@@ -248,7 +261,7 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
     const std::size_t hi = n_particles * (t + 1) / static_cast<std::size_t>(n_threads);
     std::vector<std::uint32_t>& mine = thread_counts_[t];
     mine.assign(n_cells, 0);
-    for_each_marker(lo, hi, [&](std::uint32_t c, std::uint32_t) { ++mine[c]; });
+    for_each_pair(lo, hi, [&](std::uint32_t c, std::uint32_t, std::uint8_t) { ++mine[c]; });
 #pragma omp barrier
 #pragma omp single
     {
@@ -264,8 +277,13 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
       }
       start_[n_cells] = total;
       rows_.resize(total);
+      markers_.resize(total);
     }
-    for_each_marker(lo, hi, [&](std::uint32_t c, std::uint32_t row) { rows_[mine[c]++] = row; });
+    for_each_pair(lo, hi, [&](std::uint32_t c, std::uint32_t row, std::uint8_t markers) {
+      const std::uint32_t e = mine[c]++;
+      rows_[e] = row;
+      markers_[e] = markers;
+    });
   }
   occupied_.clear();
   for (std::size_t c = 0; c < n_cells; ++c) {
@@ -276,9 +294,9 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
 double DividedMap::void_fraction(const ParticleStore& particles, double eps_min, BlockField<double>& eps,
                                  DiffusionSmoothing* smoothing) const {
   BlockField<double> solid(grid_.cells(), 0.0);
-  for_each_cell([&](std::size_t c, std::size_t i) {
+  for_each_cell([&](std::size_t c, std::size_t i, int markers) {
     const double r = particles.radius_m()[i];
-    solid[c] += 4.0 / 3.0 * std::numbers::pi * r * r * r / kMarkersPerSphere;
+    solid[c] += 4.0 / 3.0 * std::numbers::pi * r * r * r * markers / kMarkersPerSphere;
   });
   // Every stored cell (ghosts too: the solver refills them before use); the clip below walks the interior.
   const std::vector<double>& ff = grid_.fluid_fractions().data();

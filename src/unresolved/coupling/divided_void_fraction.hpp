@@ -59,16 +59,20 @@ class DividedMap {
   [[nodiscard]] bool centred_here(std::size_t i) const { return cell(i, 0) != kElsewhere; }   // marker 0: the centre
 
   /// Particle-to-grid sums without races and with the bits of a serial loop: threaded over the cells that hold
-  /// markers, f(cell, row) is called for each marker in the cell (row: the store's row of its particle) in
-  /// ascending (id, marker), the order of a loop over the particles by id and their markers. So every sum comes out
-  /// the same at any thread count, run to run, and (on slabs) at any rank count.
+  /// markers, f(cell, row, markers) is called once for each sphere with markers in the cell (row: the store's row of
+  /// the sphere; markers: how many of its 29 fell there, so its share is markers / 29), in ascending id, the order of
+  /// a loop over the particles by id and the distinct cells of their markers. So every sum comes out the same at any
+  /// thread count, run to run, and (on slabs) at any rank count. (One call per sphere and cell, not per marker: a
+  /// sphere smaller than a cell puts its 29 markers in ~3 cells.)
   template <typename F>
   void for_each_cell(F&& f) const {
     const auto n = static_cast<std::int64_t>(occupied_.size());
 #pragma omp parallel for schedule(static) if (n > kParallelCells)
     for (std::int64_t q = 0; q < n; ++q) {
       const std::size_t c = occupied_[static_cast<std::size_t>(q)];
-      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e) f(c, static_cast<std::size_t>(rows_[e]));
+      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e) {
+        f(c, static_cast<std::size_t>(rows_[e]), static_cast<int>(markers_[e]));
+      }
     }
   }
 
@@ -118,10 +122,11 @@ class DividedMap {
   std::vector<std::uint32_t> cells_;
   std::vector<std::uint32_t> by_id_;     // the rows located, by ascending id
   std::vector<std::uint32_t> id_scratch_;   // sort_rows_by_id()'s second buffer
-  // The markers sorted by cell (a stable counting sort in by_id_ order): the rows of cell c's markers are
-  // rows_[start_[c] .. start_[c + 1]).
+  // The spheres sorted by cell (a stable counting sort in by_id_ order): the rows of the spheres with markers in cell
+  // c are rows_[start_[c] .. start_[c + 1]), and markers_[e] how many of rows_[e]'s markers are there.
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> rows_;
+  std::vector<std::uint8_t> markers_;
   std::vector<std::vector<std::uint32_t>> thread_counts_;   // sort_by_cell()'s per-thread counts, kept between calls
   std::vector<std::size_t> occupied_;   // cells holding a marker, ascending
   // Slabs: fluid flags of the cached planes below (plane first - 1 - d at d) and above (first + n + d), x fastest.

@@ -95,10 +95,10 @@ Sums deposit(const FvmGrid& grid, const ParticleStore& particles) {
   Sums s{.eps = BlockField<double>(grid.cells(), 1.0), .velocity = BlockField<Vec3>(grid.cells(), Vec3{}),
          .markers = BlockField<double>(grid.cells(), 0.0)};
   s.lost_m3 = map.void_fraction(particles, 0.1, s.eps);
-  map.for_each_cell([&](std::size_t c, std::size_t i) {
-    s.velocity[c] += Vec3{particles.velocity_m_s()[0][i], particles.velocity_m_s()[1][i], particles.velocity_m_s()[2][i]} /
-                     kMarkersPerSphere;
-    s.markers[c] += 1.0;
+  map.for_each_cell([&](std::size_t c, std::size_t i, int markers) {
+    s.velocity[c] += (static_cast<double>(markers) / kMarkersPerSphere) *
+                     Vec3{particles.velocity_m_s()[0][i], particles.velocity_m_s()[1][i], particles.velocity_m_s()[2][i]};
+    s.markers[c] += markers;
   });
   return s;
 }
