@@ -30,7 +30,7 @@ inline constexpr int kMarkersPerSphere = 29;
 ///
 /// On z-slabs (the grid's slabs(), docs/cfd-dem.md "Distributed CFD-DEM" step 4) a block deposits every marker that
 /// falls in one of its own cells, of its owned particles and of the neighbours' (remote ghosts, DemSlabs), and each
-/// cell adds its markers in ascending (particle id, marker): the order of one rank holding every particle, so the
+/// cell adds its spheres' shares in ascending particle id: the order of one rank holding every particle, so the
 /// block's sums are that rank's, sliced, to the bit, without a reverse exchange. A marker in a neighbour's cell is
 /// left to the neighbour, where the particle is a ghost (the ghost layer is a cut-off, wider than a sphere).
 class DividedMap {
