@@ -71,8 +71,8 @@ def size_key(n):
 
 
 def per_step(lo, hi, steps):
-    """Per CFD step and rank: point-to-point msgs, bytes, peers; collective-generated msgs and bytes; msgs inside
-    collectives. Each entry a list over the ranks."""
+    """Per CFD step, one dict per rank: point-to-point msgs, bytes and peers; the msgs and bytes collectives generated;
+    the collective operations (msgs_inside_collectives: the monitoring's per-communicator count)."""
     d = steps[1] - steps[0]
     out = []
     for (p_lo, c_lo, i_lo), (p_hi, c_hi, i_hi) in zip(lo, hi):
@@ -113,7 +113,7 @@ def log2_fit(points):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--hemoscale", required=True)
+    ap.add_argument("--hemoscale", default="build/app/hemoscale", help="the executable to measure (not with --reuse)")
     ap.add_argument("--bench-json", required=True, help="a `bench cfddem --json` file with the _np1 keys")
     ap.add_argument("--size", type=int, default=100000, help="RBCs in the measured runs")
     ap.add_argument("--ranks", type=int, nargs="+", default=[2, 4, 8])
