@@ -232,36 +232,34 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
   const int n_threads = n_particles * kMarkersPerSphere > 16 * static_cast<std::size_t>(kParallelCells) ? omp_get_max_threads() : 1;
   thread_counts_.resize(static_cast<std::size_t>(n_threads));   // kept: a million cells' counts would fault in anew
   start_.assign(n_cells + 1, 0);
-  // f(cell, row, markers) for each distinct cell of the sphere's markers (in the order they first appear).
-  const auto for_each_pair = [&](std::size_t lo, std::size_t hi, auto&& f) {
-    std::array<std::uint32_t, kMarkersPerSphere> cell{};
-    std::array<std::uint8_t, kMarkersPerSphere> count{};
+  // The pairs of a range of spheres, each sphere's distinct cells in the order they first appear, found once and
+  // scattered by the second pass.
+  const auto find_pairs = [&](std::size_t lo, std::size_t hi, std::vector<Pair>& pairs) {
+    pairs.clear();
     for (std::size_t q = lo; q < hi; ++q) {
       const std::uint32_t row = by_id_[q];
       const std::uint32_t* cells = &cells_[std::size_t{row} * kMarkersPerSphere];
-      int distinct = 0;
+      const std::size_t first = pairs.size();
       for (int m = 0; m < kMarkersPerSphere; ++m) {
         if (cells[m] == kNowhere) continue;
-        int d = 0;
-        while (d < distinct && cell[static_cast<std::size_t>(d)] != cells[m]) ++d;
-        if (d == distinct) {
-          cell[static_cast<std::size_t>(d)] = cells[m];
-          count[static_cast<std::size_t>(d)] = 0;
-          ++distinct;
-        }
-        ++count[static_cast<std::size_t>(d)];
+        std::size_t d = first;
+        while (d < pairs.size() && pairs[d].cell != cells[m]) ++d;
+        if (d == pairs.size()) pairs.push_back({.cell = cells[m], .row = row, .markers = 0});
+        ++pairs[d].markers;
       }
-      for (int d = 0; d < distinct; ++d) f(cell[static_cast<std::size_t>(d)], row, count[static_cast<std::size_t>(d)]);
     }
   };
+  thread_pairs_.resize(static_cast<std::size_t>(n_threads));
 #pragma omp parallel num_threads(n_threads)
   {
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const std::size_t lo = n_particles * t / static_cast<std::size_t>(n_threads);
     const std::size_t hi = n_particles * (t + 1) / static_cast<std::size_t>(n_threads);
+    std::vector<Pair>& pairs = thread_pairs_[t];
+    find_pairs(lo, hi, pairs);
     std::vector<std::uint32_t>& mine = thread_counts_[t];
     mine.assign(n_cells, 0);
-    for_each_pair(lo, hi, [&](std::uint32_t c, std::uint32_t, std::uint8_t) { ++mine[c]; });
+    for (const Pair& e : pairs) ++mine[e.cell];
 #pragma omp barrier
 #pragma omp single
     {
@@ -279,11 +277,11 @@ void DividedMap::sort_by_cell(std::size_t n_cells) {
       rows_.resize(total);
       markers_.resize(total);
     }
-    for_each_pair(lo, hi, [&](std::uint32_t c, std::uint32_t row, std::uint8_t markers) {
-      const std::uint32_t e = mine[c]++;
-      rows_[e] = row;
-      markers_[e] = markers;
-    });
+    for (const Pair& e : pairs) {
+      const std::uint32_t slot = mine[e.cell]++;
+      rows_[slot] = e.row;
+      markers_[slot] = e.markers;
+    }
   }
   occupied_.clear();
   for (std::size_t c = 0; c < n_cells; ++c) {

@@ -128,6 +128,12 @@ class DividedMap {
   std::vector<std::uint32_t> rows_;
   std::vector<std::uint8_t> markers_;
   std::vector<std::vector<std::uint32_t>> thread_counts_;   // sort_by_cell()'s per-thread counts, kept between calls
+  struct Pair {   // one sphere's markers in one cell
+    std::uint32_t cell;
+    std::uint32_t row;
+    std::uint8_t markers;
+  };
+  std::vector<std::vector<Pair>> thread_pairs_;   // sort_by_cell()'s pairs of each thread's spheres, kept likewise
   std::vector<std::size_t> occupied_;   // cells holding a marker, ascending
   // Slabs: fluid flags of the cached planes below (plane first - 1 - d at d) and above (first + n + d), x fastest.
   int cached_planes_ = 0;
