@@ -9,37 +9,83 @@ namespace hs::unresolved {
 
 using hs::common::Vec3;
 
-/// Trilinear interpolation of a staggered node field of component c (values at face centres of c).
-double FvmSolver::interpolate(int c, const BlockField<double>& field, const Vec3& x_m) const {
-  const Vec3 x = grid_.wrap(x_m);
+namespace {
+
+/// A point's trilinear stencil on the block layout every field shares: the flat index of the first of the eight
+/// corners and their weights, corner q at (q & 1, (q >> 1) & 1, q >> 2). One stencil serves every field whose values
+/// sit at the same offsets (the three components of u and of div(tau) each have their own; p has its own).
+struct Stencil {
+  long base = 0;
+  std::array<long, 3> stride{};
+  std::array<double, 8> weight{};
+};
+
+/// The stencil at t (the point in cells from the block origin) for values at i + offset[a] along each axis a, the
+/// position clamped to [-1, last[a]] and the lower corner to at most n[a] (the ghost layers each field has).
+Stencil stencil_at(const std::array<double, 3>& t, const std::array<double, 3>& offset, const std::array<int, 3>& last,
+                   const std::array<int, 3>& n, const BlockField<double>& layout) {
   std::array<int, 3> i0{};
   std::array<double, 3> w{};
-  for (int a = 0; a < 3; ++a) {
-    const int n = grid_.cells()[static_cast<std::size_t>(a)];
-    double s = (x[a] - grid_.origin_m()[a]) / h_ - (a == c ? 0.0 : 0.5);
-    // A block's face field along z reaches the next block's second face (ghost plane n + 1): a point within half a
-    // cell above the block (a velocity gradient's stencil) interpolates up to it instead of stopping at face n.
-    const bool next_block = a == c && a == 2 && grid_.slabs() != nullptr && !grid_.slabs()->on_global_face(2, 1);
-    s = std::clamp(s, -1.0, static_cast<double>(next_block ? n + 1 : n));
-    const int lo = std::min(static_cast<int>(std::floor(s)), n);
-    i0[static_cast<std::size_t>(a)] = lo;
-    w[static_cast<std::size_t>(a)] = std::clamp(s - lo, 0.0, 1.0);
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double s = std::clamp(t[a] - offset[a], -1.0, static_cast<double>(last[a]));
+    const int lo = std::min(static_cast<int>(std::floor(s)), n[a]);
+    i0[a] = lo;
+    w[a] = std::clamp(s - lo, 0.0, 1.0);
   }
-  double v = 0.0;
+  Stencil st;
+  st.base = static_cast<long>(layout.index(i0[0], i0[1], i0[2]));
+  st.stride = {1, layout.stride(1), layout.stride(2)};
   for (int q = 0; q < 8; ++q) {
     const int di = q & 1;
     const int dj = (q >> 1) & 1;
     const int dk = (q >> 2) & 1;
-    const double weight = (di != 0 ? w[0] : 1.0 - w[0]) * (dj != 0 ? w[1] : 1.0 - w[1]) * (dk != 0 ? w[2] : 1.0 - w[2]);
+    st.weight[static_cast<std::size_t>(q)] =
+        (di != 0 ? w[0] : 1.0 - w[0]) * (dj != 0 ? w[1] : 1.0 - w[1]) * (dk != 0 ? w[2] : 1.0 - w[2]);
+  }
+  return st;
+}
+
+/// The field at the stencil's point; corners of zero weight are skipped (a ghost beyond the last plane is never read).
+double apply(const Stencil& st, const BlockField<double>& field) {
+  double v = 0.0;
+  for (int q = 0; q < 8; ++q) {
+    const double weight = st.weight[static_cast<std::size_t>(q)];
     if (weight == 0.0) continue;
-    v += weight * field(i0[0] + di, i0[1] + dj, i0[2] + dk);
+    const long at = st.base + (q & 1) * st.stride[0] + ((q >> 1) & 1) * st.stride[1] + ((q >> 2) & 1) * st.stride[2];
+    v += weight * field[static_cast<std::size_t>(at)];
   }
   return v;
 }
 
-Vec3 FvmSolver::velocity_at(const Vec3& x_m) const {
-  return {interpolate(0, u_[0], x_m), interpolate(1, u_[1], x_m), interpolate(2, u_[2], x_m)};
+}  // namespace
+
+std::array<double, 3> FvmSolver::in_cells(const Vec3& wrapped_m) const {
+  std::array<double, 3> t{};
+  for (int a = 0; a < 3; ++a) t[static_cast<std::size_t>(a)] = (wrapped_m[a] - grid_.origin_m()[a]) / h_;
+  return t;
 }
+
+/// Trilinear interpolation of the three staggered components (values at the face centres of their own axis) at a
+/// point: one wrap and one stencil per component.
+Vec3 FvmSolver::interpolate_components(const std::array<BlockField<double>, 3>& fields, const Vec3& x_m) const {
+  const std::array<double, 3> t = in_cells(grid_.wrap(x_m));
+  const std::array<int, 3>& n = grid_.cells();
+  // A block's face field along z reaches the next block's second face (ghost plane n + 1): a point within half a
+  // cell above the block (a velocity gradient's stencil) interpolates up to it instead of stopping at face n.
+  const bool next_block = grid_.slabs() != nullptr && !grid_.slabs()->on_global_face(2, 1);
+  Vec3 v;
+  for (int c = 0; c < 3; ++c) {
+    std::array<double, 3> offset{0.5, 0.5, 0.5};
+    offset[static_cast<std::size_t>(c)] = 0.0;
+    std::array<int, 3> last = n;
+    if (c == 2 && next_block) last[2] = n[2] + 1;
+    const BlockField<double>& f = fields[static_cast<std::size_t>(c)];
+    v[c] = apply(stencil_at(t, offset, last, n, f), f);
+  }
+  return v;
+}
+
+Vec3 FvmSolver::velocity_at(const Vec3& x_m) const { return interpolate_components(u_, x_m); }
 
 std::array<Vec3, 3> FvmSolver::velocity_gradient_at(const Vec3& x_m) const {
   std::array<Vec3, 3> g{};
@@ -53,42 +99,20 @@ std::array<Vec3, 3> FvmSolver::velocity_gradient_at(const Vec3& x_m) const {
   return g;
 }
 
-Vec3 FvmSolver::viscous_force_density_at(const Vec3& x_m) const {
-  return {interpolate(0, viscous_force_[0], x_m), interpolate(1, viscous_force_[1], x_m),
-          interpolate(2, viscous_force_[2], x_m)};
-}
+Vec3 FvmSolver::viscous_force_density_at(const Vec3& x_m) const { return interpolate_components(viscous_force_, x_m); }
 
 Vec3 FvmSolver::pressure_gradient_at(const Vec3& x_m) const {
   Vec3 grad;
+  const std::array<int, 3>& n = grid_.cells();
+  // Trilinear interpolation of the cell-centred pressure: a node field offset by half a cell on every axis.
+  const auto cell_p = [&](const Vec3& y) { return apply(stencil_at(in_cells(grid_.wrap(y)), {0.5, 0.5, 0.5}, n, n, p_), p_); };
   // Face-normal gradients live on the velocity nodes: interpolate them as node fields.
+  const Vec3 x = grid_.wrap(x_m);
   for (int c = 0; c < 3; ++c) {
-    const Vec3 x = grid_.wrap(x_m);
     Vec3 lo = x;
     Vec3 hi = x;
     lo[c] -= 0.5 * h_;
     hi[c] += 0.5 * h_;
-    auto cell_p = [&](const Vec3& y) {
-      // Trilinear interpolation of the cell-centred pressure: a node field of "component -1".
-      std::array<int, 3> i0{};
-      std::array<double, 3> w{};
-      const Vec3 yw = grid_.wrap(y);
-      for (int a = 0; a < 3; ++a) {
-        const int n = grid_.cells()[static_cast<std::size_t>(a)];
-        const double s = std::clamp((yw[a] - grid_.origin_m()[a]) / h_ - 0.5, -1.0, static_cast<double>(n));
-        const int l = std::min(static_cast<int>(std::floor(s)), n);
-        i0[static_cast<std::size_t>(a)] = l;
-        w[static_cast<std::size_t>(a)] = std::clamp(s - l, 0.0, 1.0);
-      }
-      double v = 0.0;
-      for (int q = 0; q < 8; ++q) {
-        const int di = q & 1;
-        const int dj = (q >> 1) & 1;
-        const int dk = (q >> 2) & 1;
-        v += (di != 0 ? w[0] : 1.0 - w[0]) * (dj != 0 ? w[1] : 1.0 - w[1]) * (dk != 0 ? w[2] : 1.0 - w[2]) *
-             p_(i0[0] + di, i0[1] + dj, i0[2] + dk);
-      }
-      return v;
-    };
     grad[c] = (cell_p(hi) - cell_p(lo)) / h_;
   }
   grad[drive_.axis] += drive_gradient_;

@@ -217,7 +217,10 @@ class FvmSolver {
   [[nodiscard]] double face_average(const BlockField<double>& cell_field, int c, long idx) const;
   [[nodiscard]] double momentum_cv_flux(int c, long idx, int dir) const;
   [[nodiscard]] double link_viscosity(int c, long idx, int dir) const;
-  [[nodiscard]] double interpolate(int c, const BlockField<double>& field, const hs::common::Vec3& x_m) const;
+  /// A wrapped point in cells from the block origin, (x - origin) / dx per axis.
+  [[nodiscard]] std::array<double, 3> in_cells(const hs::common::Vec3& wrapped_m) const;
+  [[nodiscard]] hs::common::Vec3 interpolate_components(const std::array<BlockField<double>, 3>& fields,
+                                                        const hs::common::Vec3& x_m) const;
   void check_state() const;
 
   const FvmGrid& grid_;
