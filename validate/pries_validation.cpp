@@ -236,7 +236,7 @@ std::pair<double, double> mean_and_se(const std::vector<double>& v) {
 }
 
 int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCorrection wall,
-                    const std::string& default_stem) {
+                    const std::string& command, const std::string& default_stem) {
   const Ranks ranks = Ranks::world();
   const fs::path dir = output_dir(options);
   // The table and plot go beside the JSON and share its name (results/X.json, X.csv, X.png), so runs kept side by
@@ -337,26 +337,27 @@ int run_pries_table(const hs::common::TaskOptions& options, hs::closures::WallCo
   result["plot"] = plotted ? png.string() : "";   // drawn after the last entry
   result["pries_curves"] = curves_path.string();
   hs::common::write_json(options.json_file ? *options.json_file : dir / (stem + ".json"), result);
-  fmt::print("pries: max error {:.1f}% (entry means over {} seed{}){}{} (table {}, plot {})\n", max_error, seeds,
+  fmt::print("{}: max error {:.1f}% (entry means over {} seed{}){}{} (table {}, plot {})\n", command, max_error, seeds,
              seeds == 1 ? "" : "s", options.quick ? " of --quick runs, not a validation" : "",
              sensitivity ? " (sensitivity study: pries_bulk is Pries 1992's own law, not a validation)" : "",
              csv_path.string(), png.string());
-  checks.print("pries");
+  checks.print(command);   // the verdict line names the command that was run
   return checks.exit_code();
 }
 
 }  // namespace
 
 int validate_pries(const hs::common::TaskOptions& options) {
-  return run_pries_table(options, hs::closures::WallCorrection::none, "pries_validation");
+  return run_pries_table(options, hs::closures::WallCorrection::none, "pries", "pries_validation");
 }
 
 int validate_pries_wall(const hs::common::TaskOptions& options) {
-  return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre, "pries_wall_validation");
+  return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre, "pries-wall", "pries_wall_validation");
 }
 
 int validate_pries_wall_relative(const hs::common::TaskOptions& options) {
-  return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre_relative, "pries_wall_relative_validation");
+  return run_pries_table(options, hs::closures::WallCorrection::haberman_sayre_relative, "pries-wall-relative",
+                         "pries_wall_relative_validation");
 }
 
 }  // namespace hs::unresolved

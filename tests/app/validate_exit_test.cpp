@@ -93,14 +93,18 @@ TEST(ValidateExitCodes, PriesQuickChecksThePlasmaAndSkipsThePriesBand) {
   EXPECT_TRUE(says(narrow, "FAILED  D = 30 um, Ht_c 0.05, seed 1: plasma flow vs Poiseuille")) << narrow.output;
 }
 
-TEST(ValidateExitCodes, PriesWallVariantsFailOutsideTheirBand) {
+TEST(ValidateExitCodes, PriesWallVariantsPassQuickAndFailOutsideTheirBand) {
   // pries-wall and pries-wall-relative run the same table and checks with the Haberman-Sayre factor on the drag: each
-  // command's own exit path is shown failing. --quick checks the plasma-only run against Poiseuille (5.6% at 6 cells
-  // across; the wall factor does not enter it): a 100x narrower band (0.056%) is below the FVM's O(dx^2) error there
-  // (+3.7%), so both must exit 1 and name the entry.
+  // command's own exit path is shown both ways. --quick checks the plasma-only run against Poiseuille (5.6% at 6 cells
+  // across; the wall factor does not enter it) and finite results, and skips the Pries band: exit 0, the verdict line
+  // naming the command. A 100x narrower band (0.056%) is below the FVM's O(dx^2) error there (+3.7%), so both must
+  // exit 1 and name the entry. (The Pries band and the steady state failing: TubePriesChecks.*.)
   for (const std::string name : {"pries-wall", "pries-wall-relative"}) {
     const fs::path dir = fs::temp_directory_path() / ("hs_validate_" + name + "_narrow");
     fs::remove_all(dir);
+    const Result quick = run("validate " + name + " --quick --json " + (dir / "quick.json").string());
+    EXPECT_EQ(quick.code, 0) << name << "\n" << quick.output;
+    EXPECT_TRUE(says(quick, name + ": 18 of 27 checks passed, 0 failed, 9 skipped")) << name << "\n" << quick.output;
     const Result r = run("validate " + name + " --quick --tighten 100 --json " + (dir / "narrow.json").string());
     EXPECT_EQ(r.code, 1) << name << "\n" << r.output;
     EXPECT_TRUE(says(r, "FAILED  D = 30 um, Ht_c 0.05, seed 1: plasma flow vs Poiseuille")) << name << "\n" << r.output;
