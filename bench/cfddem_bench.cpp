@@ -69,6 +69,8 @@ struct Measured {
   std::vector<double> stage_seconds;    // summed over the timed steps, in stage_names order
   long amg_setups;                      // BoomerAMG set-ups and reuses over the timed steps
   long amg_reuses;
+  double pressure_iterations;           // per timed CFD step: PCG over the PISO correctors
+  double momentum_iterations;           // per timed CFD step: BiCGSTAB over the three components
 };
 
 // The coupling's four stages, as the case skeleton names them (docs/cfd-dem.md).
@@ -139,6 +141,7 @@ Measured measure(long n_rbc, int repetitions) {
   std::vector<double> times;
   std::vector<double> stages(stage_names.size(), 0.0);
   long substeps = 0;
+  long pressure_iterations = 0, momentum_iterations = 0;
   const long setups0 = fluid.pressure_solver().setups(), reuses0 = fluid.pressure_solver().reuses();
   using Clock = std::chrono::steady_clock;
   for (int k = 0; k < repetitions; ++k) {
@@ -156,6 +159,8 @@ Measured measure(long n_rbc, int repetitions) {
     lap(1);
     coupling.fluid_step();
     lap(2);
+    pressure_iterations += fluid.last_stats().pressure_iterations;
+    momentum_iterations += fluid.last_stats().momentum_iterations;
     coupling.fluid_to_particles();
     lap(3);
     times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
@@ -170,7 +175,8 @@ Measured measure(long n_rbc, int repetitions) {
   MPI_Allreduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   return {times[times.size() / 2], rss_sum, rss_max, n_coupling, static_cast<long>(cells[0]) * cells[1] * cells[2],
           static_cast<double>(substeps) / repetitions, stages, fluid.pressure_solver().setups() - setups0,
-          fluid.pressure_solver().reuses() - reuses0};
+          fluid.pressure_solver().reuses() - reuses0, static_cast<double>(pressure_iterations) / repetitions,
+          static_cast<double>(momentum_iterations) / repetitions};
 }
 
 /// The open tube at 1e4 and 1e5 cells (1e4 with --quick), each in a child process; JSON keyed "1e4", "1e5".
@@ -252,7 +258,8 @@ void measure_size(long n, const Ranks& ranks, const std::string& suffix, nlohman
                m.s_per_cfd_step, steps, m.n_coupling, m.mean_substeps, m.cells, m.peak_rss_gib,
                ranks.size > 1 ? fmt::format(" ({:.2f} the largest rank)", m.peak_rss_gib_per_rank) : "", steps);
     for (std::size_t s = 0; s < stage_names.size(); ++s) fmt::print(" {} {:.3f}", stage_names[s], m.stage_seconds[s]);
-    fmt::print("; AMG set-ups {} reuses {}\n", m.amg_setups, m.amg_reuses);
+    fmt::print("; AMG set-ups {} reuses {}; iterations per step: pressure {:.1f}, momentum {:.1f}\n", m.amg_setups,
+               m.amg_reuses, m.pressure_iterations, m.momentum_iterations);
     std::fflush(stdout);
   }
   j[key + "_s_per_cfd_step" + suffix] = m.s_per_cfd_step;
@@ -262,6 +269,8 @@ void measure_size(long n, const Ranks& ranks, const std::string& suffix, nlohman
   for (std::size_t s = 0; s < stage_names.size(); ++s) j[key + "_stage_s" + suffix][stage_names[s]] = m.stage_seconds[s];
   j[key + "_amg_setups" + suffix] = m.amg_setups;
   j[key + "_amg_reuses" + suffix] = m.amg_reuses;
+  j[key + "_pressure_iterations_per_step" + suffix] = m.pressure_iterations;
+  j[key + "_momentum_iterations_per_step" + suffix] = m.momentum_iterations;
 }
 
 /// `sizes` in a job of `ranks` ranks with one thread each (`mpiexec -n ranks` of this executable, scaling_job_env
