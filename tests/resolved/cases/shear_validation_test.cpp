@@ -45,5 +45,13 @@ TEST(ShearValidation, NegativeControlASofterCellFailsTheJefferyCheck) {
   std::string log;
   EXPECT_EQ(run_shear_variant("soft", "shear_modulus_N_m = 1.0e-4", "shear_modulus_N_m = 1.0e-6", s, log), 1) << log;
   EXPECT_FALSE(s["passed"].get<bool>()) << s["checks"].dump();
+  // The failure is the one the control is for: the tumbling-period check, not some other check of the run.
+  bool period_failed = false;
+  for (const auto& check : s["checks"]) {
+    if (check["name"].get<std::string>().rfind("tumbling period / Jeffery's", 0) == 0) {
+      period_failed = check["status"].get<std::string>() == "failed";
+    }
+  }
+  EXPECT_TRUE(period_failed) << s["checks"].dump();
 }
 
