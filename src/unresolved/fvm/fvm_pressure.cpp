@@ -61,10 +61,14 @@ void FvmSolver::spread_momentum_diagonal() {
 
 void FvmSolver::build_pressure_matrix() {
   const int rows = static_cast<int>(p_cell_.size());
-  CsrMatrix a;
+  // Rebuilt every step the coefficients change, into the same buffers: at 1e6 cells the pattern and values are ~100 MB,
+  // which fresh vectors took from the kernel as new pages (zeroed on first touch) every step.
+  CsrMatrix& a = p_matrix_;
   a.rows = rows;
   a.first_row = p_first_row_;
   a.row_ptr.assign(static_cast<std::size_t>(rows) + 1, 0);
+  a.cols.clear();
+  a.values.clear();
   const double inv_h2 = 1.0 / (h_ * h_);
   // At most 7 distinct entries per row (a periodic axis of 1 or 2 cells merges neighbours).
   struct Entry {

@@ -249,6 +249,7 @@ class FvmSolver {
   int p_first_row_ = 0;                      // this rank's first pressure row (p_row_ holds global rows)
   int p_ref_row_ = -1;                       // pinned cell (global row) when no outlet fixes the pressure level
   std::array<BlockField<double>, 3> a_face_; // momentum diagonal A on the velocity nodes (spread_momentum_diagonal)
+  CsrMatrix p_matrix_;                       // the pressure matrix of the last build (its buffers reused)
   std::vector<double> p_rhs_, p_x_;
   PressureSolver pressure_;
 

@@ -19,15 +19,14 @@ namespace {
 
 HYPRE_Solver as_solver(void* p) { return static_cast<HYPRE_Solver>(p); }
 
-/// The diagonal of a CSR matrix (zero where a row has none).
-std::vector<double> diagonal_of(const CsrMatrix& a) {
-  std::vector<double> d(static_cast<std::size_t>(a.rows), 0.0);
+/// The diagonal of a CSR matrix (zero where a row has none), into d.
+void diagonal_of(const CsrMatrix& a, std::vector<double>& d) {
+  d.assign(static_cast<std::size_t>(a.rows), 0.0);
   for (int r = 0; r < a.rows; ++r) {
     for (int q = a.row_ptr[static_cast<std::size_t>(r)]; q < a.row_ptr[static_cast<std::size_t>(r) + 1]; ++q) {
       if (a.cols[static_cast<std::size_t>(q)] == a.first_row + r) d[static_cast<std::size_t>(r)] = a.values[static_cast<std::size_t>(q)];
     }
   }
-  return d;
 }
 
 }  // namespace
@@ -65,7 +64,8 @@ bool PressureSolver::can_reuse(const CsrMatrix& a) const {
   // The set-up is collective: every rank must make the same choice, so each rank's verdict is reduced.
   const auto local = [&] {
     if (!reuse_.enabled || pcg_ == nullptr || stale_ || !same_pattern(a)) return false;
-    const std::vector<double> d = diagonal_of(a);
+    std::vector<double>& d = diagonal_work_;
+    diagonal_of(a, d);
     for (std::size_t r = 0; r < d.size(); ++r) {
       const double d0 = setup_diagonal_[r];
       if (std::abs(d[r] - d0) > reuse_.max_diagonal_change * std::abs(d0)) return false;
@@ -122,7 +122,7 @@ void PressureSolver::build(const CsrMatrix& a) {
   fresh_ = true;
   stale_ = false;
   fresh_iterations_ = 0;
-  setup_diagonal_ = diagonal_of(a);
+  diagonal_of(a, setup_diagonal_);
 }
 
 int PressureSolver::solve(const std::vector<double>& b, std::vector<double>& x, const SolveTolerance& tol) {

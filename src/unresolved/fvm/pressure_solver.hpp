@@ -70,6 +70,7 @@ class PressureSolver {
   CsrMatrix pattern_;                        // a_'s rows and columns (hypre keeps the values)
   std::unique_ptr<HypreVector> b_, x_, r_;   // right-hand side, solution, residual work vector
   std::vector<double> setup_diagonal_;       // diagonal of the matrix the hierarchy was built on
+  mutable std::vector<double> diagonal_work_;   // can_reuse's copy of the new diagonal (kept: no allocation a step)
   int fresh_iterations_ = 0;                 // most iterations of a solve while the hierarchy was fresh
   bool fresh_ = false;                       // the matrix now set is the one the hierarchy was built on
   bool stale_ = false;                       // a reused hierarchy passed the iteration bound
