@@ -150,6 +150,20 @@ TEST(MembraneEnergy, SmallPureShearOfAFlatPatchIsTwoGEpsSquaredA) {
   std::printf("pure shear eps = %.0e: E / (2 G eps^2 A) - 1 = %.3e (leading term -eps)\n", eps, ratio - 1.0);
 }
 
+TEST(MembraneEnergy, NegativeControlAModulusOnePerMilleLowFailsTheSmallStrainBand) {
+  // The band of the test above (1.5 eps = 1.5e-4) must see a modulus 0.1% low: the ratio is then 0.999 (1 - eps).
+  const double g_s = 2.5;
+  const double eps = 1e-4;
+  const Positions rest = flat_patch(6);
+  Positions x = rest;
+  x.col(0) *= 1.0 + eps;
+  x.col(1) /= 1.0 + eps;
+  MembraneEnergy e(rest, patch_triangles(6), {.skalak_lambda_pN_um = 0.999 * 4.0 * g_s, .area_weight_pN_um = 5000.0});
+  Positions g;
+  const double ratio = e.evaluate(x, g) / (2.0 * g_s * eps * eps * e.rest_area());
+  EXPECT_GT(std::abs(ratio - 1.0), 1.5 * eps);
+}
+
 TEST(MembraneEnergy, SimpleShearOfAFlatPatchIsSkalak1973) {
   // x -> x + gamma y: C = [[1, gamma], [gamma, 1 + gamma^2]], I1 = gamma^2, I2 = 0, so W_S = (G/4)(gamma^4 + 2 gamma^2)
   // (small strain: G gamma^2 / 2, the linear-elastic 2 G e_xy^2 with e_xy = gamma/2). The principal axes turn with

@@ -126,6 +126,23 @@ TEST(HertzCollision, ContactTimeAndOverlapMatchHertzWithoutDamping) {
   }
 }
 
+TEST(HertzCollision, NegativeControlAFivePercentStifferContactLeavesTheBand) {
+  // The bands above must see a stiffness error: the DEM given E x 1.05 against Hertz for the original material.
+  // delta_max and t_c scale as E*^(-2/5): both move by 1.9%, six times the time band and 190 times the overlap band.
+  ParticleParams p = test::rbcpack_params();
+  p.particle.restitution = 1.0;
+  ParticleParams stiff = p;
+  stiff.particle.youngs_modulus_Pa *= 1.05;
+  const double v = 1e-2;
+  const Collision c = collide(stiff, v, false);
+  const double delta_max = hertz_delta_max_m(p, v);
+  const double t_c = hertz_time_constant() * delta_max / v;
+  EXPECT_GT(std::abs(c.contact_time_s / t_c - 1.0), kTimeBand);
+  EXPECT_GT(std::abs(c.max_overlap_m / delta_max - 1.0), kOverlapBand);
+  std::printf("E x 1.05: t / t_Hertz - 1 = %.2e, delta_max / delta_Hertz - 1 = %.2e\n", c.contact_time_s / t_c - 1.0,
+              c.max_overlap_m / delta_max - 1.0);
+}
+
 TEST(HertzCollision, DampedContactMatchesTheContactOde) {
   for (double e : {0.5, 0.8, 0.95}) {
     ParticleParams p = test::rbcpack_params();
