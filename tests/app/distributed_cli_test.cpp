@@ -3,7 +3,8 @@
 // writes the whole tube's frames, and its per-rank checkpoint refuses a resume on another rank count (exit 2, the
 // message once, naming the rank count to use). tube-open on two ranks runs as on one (cells in on the first slab,
 // out on the last). `mpirun -np 2 hemoscale validate pries` runs every tube on slabs and writes one table, as one
-// rank does; `hemoscale bench cfddem` measures its sizes on two ranks too. The agreement with one rank to round-off
+// rank does; `hemoscale bench cfddem` measures its sizes on two ranks too; an open-geometry device turned along z
+// (`[geometry] axis = "z"`) runs on two ranks as on one. The agreement with one rank to round-off
 // is tube_pries_slabs_mpi_tests' and tube_open_slabs_mpi_tests' (solves at 1e-12); here the cases' own tolerances.
 #include <gtest/gtest.h>
 
@@ -54,15 +55,16 @@ std::string header_line(const fs::path& file, const std::string& tag) {
   return text.substr(at, text.find('\n', at) - at);
 }
 
-/// `run --quick` of a committed case folder on one rank and on two, into fresh folders NAME_one and NAME_two.
+fs::path committed(const std::string& case_folder) { return fs::path(HS_SOURCE_DIR) / "cases/unresolved" / case_folder; }
+
+/// `run --quick` of a case folder on one rank and on two, into fresh folders NAME_one and NAME_two.
 struct QuickRuns {
   fs::path one, two;
   hs::test::CommandResult alone, slabs;
   nlohmann::json s1, s2;   // their summary.json (null when a run wrote none)
 };
 
-QuickRuns quick_on_one_and_two(const std::string& case_folder, const std::string& name) {
-  const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved" / case_folder;
+QuickRuns quick_on_one_and_two(const fs::path& case_dir, const std::string& name) {
   QuickRuns r{.one = fresh_dir(name + "_one"), .two = fresh_dir(name + "_two"), .alone = {}, .slabs = {}, .s1 = {}, .s2 = {}};
   r.alone = run_on_ranks(1, "run --quiet --quick " + case_dir.string() + " --output " + r.one.string());
   r.slabs = run_on_ranks(2, "run --quiet --quick " + case_dir.string() + " --output " + r.two.string());
@@ -81,7 +83,7 @@ void expect_results_close(const QuickRuns& r, const char* key, double relative) 
 
 TEST(DistributedCli, TubePriesOnTwoRanksRunsLikeOneAndResumesOnlyOnTwo) {
   const fs::path case_dir = fs::path(HS_SOURCE_DIR) / "cases/unresolved/tube-pries";
-  const QuickRuns r = quick_on_one_and_two("tube-pries", "pries_case");
+  const QuickRuns r = quick_on_one_and_two(committed("tube-pries"), "pries_case");
   ASSERT_EQ(r.slabs.code, r.alone.code) << r.slabs.output;
   const fs::path& one = r.one;
   const fs::path& two = r.two;
@@ -122,7 +124,7 @@ std::vector<std::vector<double>> csv_numbers(const fs::path& file) {
 }
 
 TEST(DistributedCli, TubeOpenOnTwoRanksRunsLikeOne) {
-  const QuickRuns r = quick_on_one_and_two("tube-open", "open");
+  const QuickRuns r = quick_on_one_and_two(committed("tube-open"), "open");
   ASSERT_EQ(r.slabs.code, r.alone.code) << r.slabs.output;
   EXPECT_EQ(r.s2.at("mpi_ranks"), 2);
   for (const char* key : {"cells_injected", "cells_removed", "cells_present"}) {
@@ -130,6 +132,43 @@ TEST(DistributedCli, TubeOpenOnTwoRanksRunsLikeOne) {
   }
   // The case's 1e-6 solves with an AMG that differs with the rank count (as tube-pries above): 1e-5 relative.
   for (const char* key : {"domain_hematocrit", "mean_di", "rbc_volume_injected_m3"}) expect_results_close(r, key, 1e-5);
+}
+
+/// The committed Y bifurcation turned with [geometry] axis = "z": its parent along +z, its box and openings turned the
+/// same way (a point (x, y, z) of the committed case is (-z, y, x) here), so its inlet faces along z.
+fs::path y_bifurcation_along_z() {
+  std::string text = slurp(committed("y-bifurcation") / "case.toml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  };
+  replace("shape = \"bifurcation\"\n", "shape = \"bifurcation\"\naxis = \"z\"\n");
+  replace("box_min_m = [0.0, -51e-6, -15e-6]", "box_min_m = [-15e-6, -51e-6, 0.0]");
+  replace("box_max_m = [120e-6, 51e-6, 15e-6]", "box_max_m = [15e-6, 51e-6, 120e-6]");
+  replace("normal   = [-1.0, 0.0, 0.0]", "normal   = [0.0, 0.0, -1.0]");
+  replace("centre_m = [120e-6, 34.6410162e-6, 0.0]", "centre_m = [0.0, 34.6410162e-6, 120e-6]");
+  replace("centre_m = [120e-6, -34.6410162e-6, 0.0]", "centre_m = [0.0, -34.6410162e-6, 120e-6]");
+  replace("normal   = [1.0, 0.0, 0.0]", "normal   = [0.0, 0.0, 1.0]");
+  replace("normal   = [1.0, 0.0, 0.0]", "normal   = [0.0, 0.0, 1.0]");
+  const fs::path dir = fresh_dir("y_bifurcation_along_z");
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.toml") << text;
+  return dir;
+}
+
+TEST(DistributedCli, OpenGeometryAlongZOnTwoRanksRunsLikeOne) {
+  // Any open-geometry device whose inlets face along z runs on z-slabs: cells enter on the first slab and leave the two
+  // outlets on the last, the channel frame's sections spanning the ranks. Tolerances as tube-open's.
+  const QuickRuns r = quick_on_one_and_two(y_bifurcation_along_z(), "open_geometry_z");
+  ASSERT_EQ(r.alone.code, 0) << r.alone.output;
+  ASSERT_EQ(r.slabs.code, 0) << r.slabs.output;
+  EXPECT_EQ(r.s2.at("mpi_ranks"), 2);
+  for (const char* key : {"cells_injected", "cells_removed", "cells_present"}) {
+    EXPECT_EQ(r.s2.at("results").at(key), r.s1.at("results").at(key)) << key;
+  }
+  EXPECT_GT(r.s1.at("results").at("cells_injected").get<long>(), 0);
+  for (const char* key : {"domain_hematocrit", "mean_di"}) expect_results_close(r, key, 1e-5);
 }
 
 TEST(DistributedCli, PriesTableOnTwoRanksIsOneRanksTable) {

@@ -132,3 +132,35 @@ TEST(ShapeFromConfig, BuildsEachShapeAndRejectsBadKeys) {
       "case.toml");
   EXPECT_TRUE(shape_from_config(bif->root().section("geometry"))->inside({50e-6, 0, 0}));
 }
+
+TEST(ShapeFromConfig, AxisZTurnsTheShapeSoThatItsXRunsAlongZ) {
+  // A bifurcation whose side branch leaves at +60 deg in the xy-plane: turned, the parent runs along +z and the branch
+  // keeps its y. Every point of the turned shape is the original's point (z, y, -x), the bounds likewise.
+  const std::string keys =
+      "shape = \"bifurcation\"\nparent_diameter_m = 20e-6\nparent_length_m = 100e-6\n"
+      "daughter_diameters_m = [16e-6, 12e-6]\ndaughter_lengths_m = [100e-6, 100e-6]\ndaughter_angles_deg = [0, 60]\n";
+  auto along_x = ConfigFile::parse("[geometry]\n" + keys, "case.toml");
+  auto along_z = ConfigFile::parse("[geometry]\naxis = \"z\"\n" + keys, "case.toml");
+  const auto x_shape = shape_from_config(along_x->root().section("geometry"));
+  const auto z_shape = shape_from_config(along_z->root().section("geometry"));
+  EXPECT_NO_THROW(along_z->finish());
+  for (const Vec3 q : {Vec3{50e-6, 0, 0}, Vec3{150e-6, 40e-6, 3e-6}, Vec3{120e-6, -30e-6, 0}, Vec3{50e-6, 0, 9.9e-6}}) {
+    const Vec3 p{-q.z, q.y, q.x};
+    EXPECT_EQ(z_shape->signed_distance(p), x_shape->signed_distance(q));
+  }
+  EXPECT_TRUE(z_shape->inside({0, 0, 50e-6}));
+  EXPECT_FALSE(z_shape->inside({50e-6, 0, 0}));
+  const Box3 bx = x_shape->bounds(), bz = z_shape->bounds();
+  EXPECT_EQ(bz.lo.z, bx.lo.x);
+  EXPECT_EQ(bz.hi.z, bx.hi.x);
+  EXPECT_EQ(bz.lo.x, -bx.hi.z);
+  EXPECT_EQ(bz.hi.x, -bx.lo.z);
+  EXPECT_EQ(bz.lo.y, bx.lo.y);
+  auto bad = ConfigFile::parse("[geometry]\naxis = \"y\"\n" + keys, "case.toml");
+  try {
+    (void)shape_from_config(bad->root().section("geometry"));
+    FAIL() << "axis = \"y\" must be rejected";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("[geometry] axis"), std::string::npos) << e.what();
+  }
+}

@@ -4,12 +4,15 @@
 
 #include <fmt/format.h>
 
+#include <utility>
+
 #include "common/geometry/bifurcation.hpp"
 #include "common/geometry/box_shape.hpp"
 #include "common/geometry/stenosed_channel.hpp"
 #include "common/geometry/stenosed_tube.hpp"
 #include "common/geometry/stl_shape.hpp"
 #include "common/geometry/tube.hpp"
+#include "common/geometry/turned_shape.hpp"
 
 namespace hs::common {
 namespace {
@@ -59,9 +62,7 @@ std::shared_ptr<const Shape> bifurcation(ConfigSection& g) {
                                                        .daughter_angle_deg = {a[0], a[1]}});
 }
 
-}  // namespace
-
-std::shared_ptr<const Shape> shape_from_config(ConfigSection g) {
+std::shared_ptr<const Shape> shape_along_x(ConfigSection g) {
   const std::string shape =
       g.one_of("shape", {"tube", "stenosed-tube", "stenosed-channel", "bifurcation", "box", "stl"});
   if (shape == "tube") {
@@ -80,6 +81,14 @@ std::shared_ptr<const Shape> shape_from_config(ConfigSection g) {
   const auto file = g.file_path("file");
   const double scale = g.positive_or("scale_to_m", 1.0);
   return StlShape::load(file, scale);
+}
+
+}  // namespace
+
+std::shared_ptr<const Shape> shape_from_config(ConfigSection g) {
+  std::shared_ptr<const Shape> shape = shape_along_x(g);
+  if (g.one_of_or("axis", {"x", "z"}, "x") == "z") shape = std::make_shared<TurnedToZ>(std::move(shape));
+  return shape;
 }
 
 }  // namespace hs::common

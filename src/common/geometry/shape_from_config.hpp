@@ -19,7 +19,8 @@ namespace hs::common {
 ///                               daughter_lengths_m = [l0, l1], daughter_angles_deg = [a0, a1]  (junction at x = parent_length_m)
 ///   shape = "box":              size_m = [lx, ly, lz]  (from (0, -ly/2, -lz/2))
 ///   shape = "stl":              file (relative to the case file), [scale_to_m = 1]
-/// Every invalid combination is a ConfigError naming the key.
+/// and for any shape [axis = "x"]: "z" turns it so that its +x runs along +z (TurnedToZ; its +z along -x), as the
+/// distributed CFD-DEM needs (its inlets face along z). Every invalid combination is a ConfigError naming the key.
 std::shared_ptr<const Shape> shape_from_config(ConfigSection geometry);
 
 }  // namespace hs::common

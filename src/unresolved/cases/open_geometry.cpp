@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "common/errors.hpp"
 #include "common/geometry/openings_from_config.hpp"
 #include "common/geometry/shape_from_config.hpp"
+#include "common/geometry/turned_shape.hpp"
 #include "common/run_context.hpp"
 #include "unresolved/cases/bifurcation_study_measurement.hpp"
 #include "unresolved/cases/cfd_dem_case_run.hpp"
@@ -18,7 +21,6 @@
 #include "unresolved/cases/open_geometry_measurement.hpp"
 #include "unresolved/cases/step_limits.hpp"
 #include "unresolved/cases/stenosis_study_measurement.hpp"
-#include "unresolved/coupling/one_rank_guard.hpp"
 #include "unresolved/dem/cell_injector.hpp"
 
 namespace hs::unresolved {
@@ -121,6 +123,10 @@ OpenGeometryConfig parse_open_geometry(hs::common::ConfigFile& file, bool quick)
   c.quick = quick;
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
   c.vtk_every_s = root.section_or_empty("output").positive_or("vtk_every_s", 0.0);   // 0 (absent): final frame only
+  if (root.has("study") && dynamic_cast<const hs::common::TurnedToZ*>(c.shape.get()) != nullptr) {
+    root.section("geometry").fail("axis", "the stenosis and bifurcation studies measure along x: with a [study] section "
+                                          "leave axis out (or \"x\")");
+  }
   if (dynamic_cast<const hs::common::StenosedTube*>(c.shape.get()) != nullptr) {
     c.stenosis_study = parse_stenosis_study(root, *c.shape);
   } else {
@@ -156,9 +162,35 @@ nlohmann::json simulate_open_geometry(const OpenGeometryConfig& c, const std::fu
       .summary;
 }
 
+namespace {
+
+/// What open-geometry cannot do on several ranks, refused before the run folder is made: the studies' measurements
+/// run on one rank, and on z-slabs the cells enter on the slab holding an inlet, so every inlet must face along z.
+void require_slab_ready(const OpenGeometryConfig& c, const std::filesystem::path& file) {
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  if (ranks == 1) return;
+  if (c.study || c.stenosis_study) {
+    throw hs::common::ConfigError(fmt::format(
+        "{}: [study]: the stenosis and bifurcation studies' measurements run on one rank only, and this run was started "
+        "on {} MPI ranks: run it without mpirun (or mpirun -np 1), or leave out [study]", file.string(), ranks));
+  }
+  for (const auto& o : c.openings) {
+    const hs::common::Vec3& n = o.opening.normal;
+    if (o.type != OpeningFlowType::flow_rate_inlet || std::abs(std::abs(n.z) - 1.0) < 1e-12) continue;
+    throw hs::common::ConfigError(fmt::format(
+        "{}: [openings.{}]: on {} MPI ranks the grid is cut into z-slabs and cells enter on the slab holding their inlet, "
+        "so an inlet must face along z (its normal is ({:.3g}, {:.3g}, {:.3g})): give [geometry] axis = \"z\" (the "
+        "shape's +x along +z) with the openings in that frame, or run on one rank", file.string(), o.opening.name, ranks,
+        n.x, n.y, n.z));
+  }
+}
+
+}  // namespace
+
 int run_open_geometry(const hs::common::CaseRequest& request) {
-  require_one_rank("open-geometry");   // before the run folder is made
   const OpenGeometryConfig c = parse_open_geometry(*request.config, request.quick);
+  require_slab_ready(c, request.config->file());   // before the run folder is made
   double max_ht = 0.0;   // an upper bound of the cells present: the box full at the highest inlet hematocrit
   for (const double h : c.discharge_hematocrit) max_ht = std::max(max_ht, h);
   const hs::common::Vec3 side = c.box.hi - c.box.lo;
@@ -167,7 +199,8 @@ int run_open_geometry(const hs::common::CaseRequest& request) {
   ctx.log().set_quiet(request.quiet);
   ctx.log().info("open-geometry: {} openings, inflow {:.4g} m^3/s, dx = {:.4g} m, dt = {:.4g} s, n_coupling = {}, {} steps",
                  c.openings.size(), c.inflow_m3_s(), c.dx_m, c.dt_s, c.n_coupling, c.steps());
-  CfdDemSolvers run(open_geometry_setup(c));
+  if (ctx.ranks() > 1) ctx.log().info("open-geometry: the grid and the cells on {} z-slabs, one per MPI rank", ctx.ranks());
+  CfdDemSolvers run(open_geometry_setup(c), MPI_COMM_WORLD);
   const auto m = make_measurement(c);
   const CfdDemOutcome out = run_cfd_dem_in_folder(
       ctx, run, *m, {.steps = c.steps(), .checkpoint_every_wall_s = c.checkpoint_every_wall_s, .vtk_every_s = c.vtk_every_s});
