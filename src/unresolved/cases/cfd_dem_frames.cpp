@@ -13,6 +13,7 @@
 #include <mpi.h>
 
 #include "common/io/vtk_image.hpp"
+#include "unresolved/cases/slab_gather.hpp"
 #include "unresolved/dem/particle_output.hpp"
 
 namespace hs::unresolved {
@@ -22,27 +23,6 @@ int rank_of(MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   return rank;
-}
-
-/// Every rank's values on rank 0, rank after rank, with each rank's count (both empty on the other ranks).
-struct Gathered {
-  std::vector<double> values;
-  std::vector<int> counts;
-};
-
-Gathered gathered(const std::vector<double>& mine, MPI_Comm comm) {
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  if (size == 1) return {mine, {static_cast<int>(mine.size())}};
-  const int count = static_cast<int>(mine.size());
-  const bool root = rank_of(comm) == 0;
-  std::vector<int> counts(root ? static_cast<std::size_t>(size) : 0);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  std::vector<int> displs(counts.size(), 0);
-  if (root) std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
-  std::vector<double> all(root ? static_cast<std::size_t>(displs.back() + counts.back()) : 0);
-  MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
-  return {std::move(all), std::move(counts)};
 }
 
 /// The owned particles of every rank on rank 0, in id order, so that a frame is the same file on any rank count.
@@ -61,26 +41,6 @@ ParticleStore particles_in_id_order(const ParticleStore& mine, MPI_Comm comm) {
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return out.id()[a] < out.id()[b]; });
   out.permute_owned(order);
   return out;
-}
-
-/// A cell field of the block (x fastest, z slowest, `components` values per cell) as the whole grid's on rank 0:
-/// each slab's planes where its first plane is (empty on the other ranks; `mine` itself without slabs).
-std::vector<double> whole_grid(const std::vector<double>& mine, const FvmGrid& g, int components, MPI_Comm comm) {
-  if (g.slabs() == nullptr) return mine;
-  const Gathered all = gathered(mine, comm);
-  const std::vector<double> firsts = gathered({static_cast<double>(g.first_plane())}, comm).values;
-  if (all.counts.empty()) return {};
-  const auto& n = g.global_cells();
-  const std::size_t per_plane = static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(n[1]) * static_cast<std::size_t>(components);
-  std::vector<double> whole(per_plane * static_cast<std::size_t>(n[2]));
-  std::size_t from = 0;
-  for (std::size_t r = 0; r < all.counts.size(); ++r) {
-    const auto count = static_cast<std::size_t>(all.counts[r]);
-    std::copy_n(all.values.begin() + static_cast<long>(from), count,
-                whole.begin() + static_cast<long>(static_cast<std::size_t>(firsts[r]) * per_plane));
-    from += count;
-  }
-  return whole;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "unresolved/cases/tube_plasma.hpp"
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -22,8 +23,9 @@
 #include "common/run_folder.hpp"
 #include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
+#include "common/parallel/cartesian_decomposition.hpp"
 #include "unresolved/cases/grid_budget.hpp"
-#include "unresolved/coupling/one_rank_guard.hpp"
+#include "unresolved/cases/slab_gather.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
 #include "common/fluid_properties.hpp"
 
@@ -102,7 +104,10 @@ double poiseuille_flow_rate(const TubePlasmaConfig& c, double gradient_Pa_m) {
   return std::numbers::pi * std::pow(r, 4) * -gradient_Pa_m / (8.0 * c.fluid.density_kg_m3 * c.fluid.kinematic_viscosity_m2_s);
 }
 
-void write_fields(const FvmSolver& solver, const hs::common::RunFolder& folder, hs::common::PvdSeries& pvd, long step) {
+/// One fluid frame (cell-centred velocity, pressure and void fraction): on z-slabs every rank calls it (collective) and
+/// rank 0, the one with a `pvd`, writes the whole grid's file.
+void write_fields(const FvmSolver& solver, const hs::common::RunFolder& folder, hs::common::PvdSeries* pvd, long step,
+                  MPI_Comm comm) {
   const FvmGrid& grid = solver.grid();
   const auto& n = grid.cells();
   std::vector<double> velocity;
@@ -120,14 +125,19 @@ void write_fields(const FvmSolver& solver, const hs::common::RunFolder& folder, 
       }
     }
   }
+  velocity = whole_grid(velocity, grid, 3, comm);
+  pressure = whole_grid(pressure, grid, 1, comm);
+  eps = whole_grid(eps, grid, 1, comm);
+  if (pvd == nullptr) return;
   const double h = grid.dx_m();
-  hs::common::VtkImage image(n, grid.origin_m() + Vec3{0.5 * h, 0.5 * h, 0.5 * h}, h);
+  const Vec3 o = grid.box_m().lo;
+  hs::common::VtkImage image(grid.global_cells(), o + Vec3{0.5 * h, 0.5 * h, 0.5 * h}, h);
   image.add_vector("velocity_m_s", velocity);
   image.add_scalar("pressure_Pa", pressure);
   image.add_scalar("void_fraction", eps);
   const std::string name = fmt::format("fluid_{:08d}.vti", step);
   image.write(folder.vtk_dir() / name);
-  pvd.add(solver.time_s(), "vtk/" + name);
+  pvd->add(solver.time_s(), "vtk/" + name);
 }
 
 nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, const hs::common::TimeLoop& loop) {
@@ -147,8 +157,9 @@ nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, con
   summary["groups"] = {{"reynolds", mean_velocity * c.diameter_m / c.fluid.kinematic_viscosity_m2_s},
                        {"courant", solver.last_stats().courant},
                        {"viscous_number", c.fluid.kinematic_viscosity_m2_s * c.piso.dt_s / (dx * dx)}};
+  const auto& cells = solver.grid().global_cells();
   summary["numerics"] = {{"cells_across_diameter", c.cells_across},
-                         {"cells", solver.grid().cell_count()},
+                         {"cells", static_cast<long>(cells[0]) * cells[1] * cells[2]},
                          {"steps", loop.step()},
                          {"pressure_coupling", c.piso.coupling == PressureCoupling::piso ? "piso" : "projection"},
                          {"max_error_pct", c.max_error_pct}};
@@ -159,7 +170,6 @@ nlohmann::json summarise(const TubePlasmaConfig& c, const FvmSolver& solver, con
 }  // namespace
 
 int run_tube_plasma(const hs::common::CaseRequest& request) {
-  require_one_rank("tube-plasma");   // before the run folder is made
   const TubePlasmaConfig c = parse(*request.config, request.quick);
   require_tube_grid_memory(*request.config, c.diameter_m, c.length_m, c.cells_across);
   hs::common::RunContext ctx = hs::common::RunContext::start(request, "tube-plasma");
@@ -168,29 +178,51 @@ int run_tube_plasma(const hs::common::CaseRequest& request) {
   log.set_quiet(request.quiet);
   const double dx = c.diameter_m / c.cells_across;
   const hs::common::UnitConverter units({.dx_m = dx, .dt_s = c.piso.dt_s, .rho_kg_m3 = c.fluid.density_kg_m3});
-  units.write(folder.file("units.txt"));
+  if (ctx.rank() == 0) units.write(folder.file("units.txt"));
 
   const double r = 0.5 * c.diameter_m;
   const hs::common::Tube tube({.start_m = {0, 0, 0}, .end_m = {0, 0, c.length_m}, .radius_m = r});
   FvmGridSpec spec{.box_m = {{-r, -r, 0.0}, {r, r, c.length_m}}, .dx_m = dx, .sides = {}};
   spec.sides[4].type = SideType::periodic;
   spec.sides[5].type = SideType::periodic;
-  const FvmGrid grid(tube, spec);
-  FvmSolver solver(grid, c.fluid, c.piso, c.drive);
-  log.info("tube-plasma: D = {:.4g} m, L = {:.4g} m, {} x {} x {} cells (dx = {:.4g} m), dt = {:.4g} s", c.diameter_m,
-           c.length_m, grid.cells()[0], grid.cells()[1], grid.cells()[2], dx, c.piso.dt_s);
+  // On several ranks: z-slabs of the tube, one a rank (as tube-pries; docs/cfd-dem.md "Distributed CFD-DEM").
+  std::unique_ptr<hs::common::CartesianDecomposition> slabs;
+  if (ctx.ranks() > 1) {
+    slabs = std::make_unique<hs::common::CartesianDecomposition>(
+        hs::common::DecompositionSpec{.global_nodes = FvmGrid::cells_of(spec), .periodic = {false, false, true},
+                                      .ranks_per_axis = {1, 1, 0}, .ghost = 2},
+        MPI_COMM_WORLD);
+  }
+  const FvmGrid grid(tube, spec, slabs.get());
+  FvmSolver solver(grid, c.fluid, c.piso, c.drive, MPI_COMM_WORLD);
+  const auto& cells = grid.global_cells();
+  log.info("tube-plasma: D = {:.4g} m, L = {:.4g} m, {} x {} x {} cells (dx = {:.4g} m), dt = {:.4g} s{}", c.diameter_m,
+           c.length_m, cells[0], cells[1], cells[2], dx, c.piso.dt_s,
+           ctx.ranks() > 1 ? fmt::format(", on {} z-slabs (MPI ranks)", ctx.ranks()) : std::string());
 
-  hs::common::CsvWriter series(folder.file("timeseries.csv"), {"time_s", "flow_rate_m3_s", "pressure_gradient_Pa_m", "courant",
-                                                               "pressure_iterations", "momentum_iterations"});
-  hs::common::PvdSeries pvd(folder.file("fluid.pvd"));
+  // Rank 0 writes the files; every rank takes part in the collective sums and gathers.
+  const bool root = ctx.rank() == 0;
+  std::unique_ptr<hs::common::CsvWriter> series;
+  std::unique_ptr<hs::common::PvdSeries> pvd;
+  if (root) {
+    series = std::make_unique<hs::common::CsvWriter>(
+        folder.file("timeseries.csv"),
+        std::vector<std::string>{"time_s", "flow_rate_m3_s", "pressure_gradient_Pa_m", "courant", "pressure_iterations",
+                                 "momentum_iterations"});
+    pvd = std::make_unique<hs::common::PvdSeries>(folder.file("fluid.pvd"));
+  }
   hs::common::TimeLoop loop(units.to_lattice_steps(c.end_time_s));
   loop.add("piso_step", [&] { solver.step(); });
   loop.add("timeseries", [&] {
     const auto& st = solver.last_stats();
-    series.row({solver.time_s(), solver.flow_rate_m3_s(2), solver.drive_pressure_gradient_Pa_m(), st.courant,
-                static_cast<double>(st.pressure_iterations), static_cast<double>(st.momentum_iterations)});
+    const double q = solver.flow_rate_m3_s(2);   // collective
+    if (series) {
+      series->row({solver.time_s(), q, solver.drive_pressure_gradient_Pa_m(), st.courant,
+                   static_cast<double>(st.pressure_iterations), static_cast<double>(st.momentum_iterations)});
+    }
   });
-  loop.every(std::max(1L, units.to_lattice_steps(c.fields_every_s)), "write_fields", [&] { write_fields(solver, folder, pvd, loop.step()); });
+  loop.every(std::max(1L, units.to_lattice_steps(c.fields_every_s)), "write_fields",
+             [&] { write_fields(solver, folder, pvd.get(), loop.step(), MPI_COMM_WORLD); });
   hs::common::Progress progress("tube-plasma", loop.end_step(), ctx.show_progress());
   loop.run([&](long s) { progress.update(s); });
   progress.finish();
