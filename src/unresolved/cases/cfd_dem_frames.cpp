@@ -19,12 +19,6 @@
 namespace hs::unresolved {
 namespace {
 
-int rank_of(MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  return rank;
-}
-
 /// The owned particles of every rank on rank 0, in id order, so that a frame is the same file on any rank count.
 ParticleStore particles_in_id_order(const ParticleStore& mine, MPI_Comm comm) {
   ParticleStore copy = mine;   // pack_owned() reads through ParticleStore's non-const column visitor

@@ -6,15 +6,12 @@
 #include <utility>
 
 namespace hs::unresolved {
-namespace {
 
 int rank_of(MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   return rank;
 }
-
-}  // namespace
 
 Gathered gathered(const std::vector<double>& mine, MPI_Comm comm) {
   int size = 1;

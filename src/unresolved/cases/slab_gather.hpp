@@ -11,6 +11,9 @@
 
 namespace hs::unresolved {
 
+/// This process's rank in `comm`.
+[[nodiscard]] int rank_of(MPI_Comm comm);
+
 /// Every rank's values on rank 0, rank after rank, with each rank's count (both empty on the other ranks).
 struct Gathered {
   std::vector<double> values;
