@@ -11,7 +11,6 @@
 #include "bench/bench_targets.hpp"
 #include "bench/clean_child.hpp"
 #include "bench/cfddem_open_tube.hpp"
-#include "bench/peak_rss.hpp"
 
 #include <unistd.h>
 
@@ -36,6 +35,7 @@
 #include "closures/register_builtin.hpp"
 #include "common/errors.hpp"
 #include "common/geometry/tube.hpp"
+#include "common/peak_memory.hpp"
 #include "common/run_folder.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/coupling/one_rank_guard.hpp"
@@ -170,7 +170,7 @@ Measured measure(long n_rbc, int repetitions) {
   stages = max_over_ranks(stages);
   std::sort(times.begin(), times.end());
   const std::array<int, 3> cells = FvmGrid::cells_of(spec);
-  double rss = peak_rss_gib(), rss_sum = 0.0, rss_max = 0.0;
+  double rss = hs::common::peak_memory_gib(), rss_sum = 0.0, rss_max = 0.0;
   MPI_Allreduce(&rss, &rss_sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   MPI_Allreduce(&rss, &rss_max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   return {times[times.size() / 2], rss_sum, rss_max, n_coupling, static_cast<long>(cells[0]) * cells[1] * cells[2],

@@ -18,7 +18,7 @@
 #include <fmt/format.h>
 
 #include "bench/clean_child.hpp"
-#include "bench/peak_rss.hpp"
+#include "common/peak_memory.hpp"
 #include "unresolved/cases/cfd_dem_case.hpp"
 #include "unresolved/cases/tube_open.hpp"
 #include "unresolved/cases/open_geometry_measurement.hpp"
@@ -116,7 +116,7 @@ nlohmann::json measure_open_tube(long n_cells, int repetitions) {
   const auto change = [&](const char* name) {
     return std::lround(after[column(columns, name)] - before[column(columns, name)]);
   };
-  return {{"s_per_cfd_step", sorted[sorted.size() / 2]}, {"step_times_s", times}, {"peak_rss_GiB", peak_rss_gib()},
+  return {{"s_per_cfd_step", sorted[sorted.size() / 2]}, {"step_times_s", times}, {"peak_rss_GiB", hs::common::peak_memory_gib()},
           {"cells", static_cast<long>(run.dem().particles().n_owned())}, {"cells_filled", fill.positions_m.size()},
           {"fvm_cells", run.grid().cell_count()}, {"length_m", c.length_m}, {"n_coupling", c.n_coupling},
           {"timed_steps", repetitions}, {"cells_injected_in_timed_steps", change("inlet_cells_in")},

@@ -17,6 +17,7 @@
 #include "closures/sha256.hpp"
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
+#include "common/peak_memory.hpp"
 #include "common/run_folder.hpp"
 #include "common/summary_schema.hpp"
 #include "regression/bootstrap_constants.hpp"
@@ -225,6 +226,7 @@ ClosureFile run_fit(const FitRequest& request, const std::filesystem::path& out_
   hs::common::write_json(out_dir / "summary.json",
                          hs::common::assemble_summary(blocks, {}, {.case_type = "fit", .quick = false, .mpi_ranks = 1,
                                                                    .wall_time_s = seconds,
+                                                                   .peak_memory_GiB = hs::common::peak_memory_gib(),
                                                                    .provenance = hs::common::provenance()}));
   if (!quiet) {
     fmt::print("{} = {}\n  R2 train {:.6f}, cv {:.6f}, test {:.6f}; {} generations, {:.1f} s\n", closure.output,

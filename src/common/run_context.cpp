@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/errors.hpp"
+#include "common/peak_memory.hpp"
 #include "common/summary_schema.hpp"
 
 namespace hs::common {
@@ -69,10 +70,13 @@ double RunContext::wall_seconds() const {
 }
 
 nlohmann::json RunContext::write_summary(nlohmann::json blocks, const CheckList& checks) const {
+  // Every rank writes its summary (the distributed cases call this on all of them): the job's memory is the sum.
+  double memory = peak_memory_gib();
+  if (ranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, &memory, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   const nlohmann::json summary =
       assemble_summary(std::move(blocks), checks,
                        {.case_type = case_type_, .quick = quick_, .mpi_ranks = ranks_, .wall_time_s = wall_seconds(),
-                        .provenance = provenance()});
+                        .peak_memory_GiB = memory, .provenance = provenance()});
   if (rank_ == 0) write_json(folder_->file("summary.json"), summary);
   return summary;
 }

@@ -80,6 +80,10 @@ std::vector<std::string> summary_schema_problems(const nlohmann::json& s) {
   require(p, s, "provenance", &nlohmann::json::is_object, "an object");
   require(p, s, "wall_time_s", &nlohmann::json::is_number, "a number");
   require(p, s, "mpi_ranks", &nlohmann::json::is_number_integer, "an integer");
+  // Optional: summaries written before it was added (same schema) have none.
+  if (s.contains("peak_memory_GiB") && !s.at("peak_memory_GiB").is_number()) {
+    p.push_back(fmt::format("`peak_memory_GiB` is {}, not a number", s.at("peak_memory_GiB").type_name()));
+  }
   if (s.contains("provenance") && s.at("provenance").is_object()) {
     for (const char* key : {"version", "git_commit", "build_type", "host", "written_utc"}) {
       if (!s.at("provenance").contains(key)) p.push_back(fmt::format("`provenance.{}` is missing", key));
@@ -90,7 +94,7 @@ std::vector<std::string> summary_schema_problems(const nlohmann::json& s) {
   static const std::set<std::string> known{"schema_version", "case_type",  "quick",      "passed",
                                            "checks",         "checks_failed", "checks_skipped", "results",
                                            "groups",         "numerics",   "timings",    "provenance",
-                                           "wall_time_s",    "mpi_ranks"};
+                                           "wall_time_s",    "mpi_ranks",  "peak_memory_GiB"};
   for (const auto& [key, value] : s.items()) {
     if (!known.count(key)) p.push_back(fmt::format("`{}` is no key of the layout: a case's values go under results, "
                                                    "groups, numerics or timings", key));
@@ -115,6 +119,7 @@ nlohmann::json assemble_summary(nlohmann::json blocks, const CheckList& checks, 
   s["provenance"] = run.provenance;
   s["wall_time_s"] = run.wall_time_s;
   s["mpi_ranks"] = run.mpi_ranks;
+  s["peak_memory_GiB"] = run.peak_memory_GiB;
   const Problems p = summary_schema_problems(s);
   if (!p.empty()) {
     std::string all;

@@ -23,6 +23,7 @@ struct SummaryRun {
   bool quick = false;
   int mpi_ranks = 1;
   double wall_time_s = 0.0;
+  double peak_memory_GiB = 0.0;   // the job's: each rank's peak resident set size, summed
   nlohmann::json provenance;   // common::provenance()
 };
 

@@ -13,7 +13,8 @@ using namespace hs::common;
 namespace {
 
 SummaryRun run_of(const std::string& type, bool quick) {
-  return {.case_type = type, .quick = quick, .mpi_ranks = 1, .wall_time_s = 2.0, .provenance = provenance()};
+  return {.case_type = type, .quick = quick, .mpi_ranks = 1, .wall_time_s = 2.0, .peak_memory_GiB = 0.25,
+          .provenance = provenance()};
 }
 
 nlohmann::json good() {
@@ -42,6 +43,15 @@ TEST(SummarySchema, AssembledSummaryConformsAndHasEveryBlock) {
   EXPECT_TRUE(s["passed"].get<bool>());
   EXPECT_EQ(s["checks_skipped"], 1);
   EXPECT_EQ(s["quick"], true);
+  EXPECT_EQ(s["peak_memory_GiB"], 0.25);
+}
+
+TEST(SummarySchema, PeakMemoryIsOptionalButANumber) {
+  auto s = good();
+  s.erase("peak_memory_GiB");   // summaries archived before the key was added
+  EXPECT_TRUE(summary_schema_problems(s).empty());
+  s["peak_memory_GiB"] = "1 GiB";
+  EXPECT_TRUE(names(summary_schema_problems(s), "`peak_memory_GiB` is string"));
 }
 
 TEST(SummarySchema, EachDepartureIsNamed) {

@@ -159,6 +159,9 @@ CfdDemOutcome run_cfd_dem(CfdDemSolvers& run, CfdDemMeasurement& m, const CfdDem
   for (const auto& g : groups.items()) out.summary["groups"][g.key()] = g.value();
   out.summary["numerics"]["cfd_steps"] = static_cast<long>(out.rows.size());
   out.summary["numerics"]["prepare_seconds"] = out.prepare_seconds;
+  // The pressure solve's AMG hierarchy: built anew or kept for a step's new matrix (since the start or the resume).
+  out.summary["numerics"]["pressure_amg_setups"] = run.fluid().pressure_solver().setups();
+  out.summary["numerics"]["pressure_amg_reuses"] = run.fluid().pressure_solver().reuses();
   out.summary["timings"] = loop.timings();
   out.timing_table = loop.timing_table();
   return out;

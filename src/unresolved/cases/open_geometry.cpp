@@ -123,6 +123,8 @@ OpenGeometryConfig parse_open_geometry(hs::common::ConfigFile& file, bool quick)
   c.quick = quick;
   if (quick) c.end_time_s = std::min(c.end_time_s, 20.0 * c.dt_s);
   c.vtk_every_s = root.section_or_empty("output").positive_or("vtk_every_s", 0.0);   // 0 (absent): final frame only
+  // A run that claims a scale (the studies' paper-scale runs) fails when fewer cells passed through the device.
+  c.min_cells_passed = root.section_or_empty("check").integer_in_or("min_cells_passed", 0, 1L << 40, 0);
   if (root.has("study") && dynamic_cast<const hs::common::TurnedToZ*>(c.shape.get()) != nullptr) {
     root.section("geometry").fail("axis", "the stenosis and bifurcation studies measure along x: with a [study] section "
                                           "leave axis out (or \"x\")");

@@ -42,6 +42,7 @@ struct OpenGeometryConfig {
   double average_from_fraction = 0.5;   // averages over the last (1 - this) of the run
   double checkpoint_every_wall_s = 600.0;
   double vtk_every_s = 0.0;
+  long min_cells_passed = 0;   // [check]: at least this many cells leave through the outlets (0: no check)
   bool quick = false;
   std::optional<BifurcationStudySpec> study;             // [study]: the bifurcation study's measurement on top
   std::optional<StenosisStudySpec> stenosis_study;       // [study] on a stenosed tube: the stenosis study's instead

@@ -259,9 +259,15 @@ void check_open_geometry(const OpenGeometryConfig& c, const nlohmann::json& s, h
   } else {
     checks.skip("injected RBC volume vs Ht_d x inflow", fmt::format("{:.1f} residence times, fewer than the 10 it needs", residence));
   }
+  const std::string scale_check = fmt::format("cells passed through the device (left at its outlets) >= {}", c.min_cells_passed);
   if (c.quick) {
     checks.skip("fluid balance and steady hematocrit", "--quick: the domain has not filled yet");
+    if (c.min_cells_passed > 0) checks.skip(scale_check, "--quick: 20 steps");
     return;
+  }
+  if (c.min_cells_passed > 0) {
+    checks.expect(scale_check, s["cells_removed"].get<long>() >= c.min_cells_passed,
+                  fmt::format("{} left", s["cells_removed"].get<long>()));
   }
   // #21's acceptance: inlet = sum of the outlets for the fluid within 0.1%.
   const double balance = s["fluid_balance_pct"].get<double>();

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The open-geometry case (any shape between named openings) on the CFD-DEM skeleton: the committed Y bifurcation runs
 // (--quick) with per-opening counters, exact bookkeeping and frames; bad openings, hematocrits and an open STL each
-// give a ConfigError naming the file's key.
+// give a ConfigError naming the file's key; a run that claims a scale ([check] min_cells_passed) fails below it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,6 +15,7 @@
 #include "common/errors.hpp"
 #include "common/io/csv_writer.hpp"
 #include "unresolved/cases/open_geometry.hpp"
+#include "unresolved/cases/open_geometry_measurement.hpp"
 
 namespace {
 
@@ -120,6 +121,30 @@ TEST(OpenGeometryCase, OpenStlSurfaceIsRefused) {
   const std::string error = parse_error(text);
   EXPECT_NE(error.find("closed"), std::string::npos) << error;
   fs::remove_all(dir);
+}
+
+TEST(OpenGeometryCase, TheScaleCheckFailsBelowItsCellCountAndIsSkippedWithQuick) {
+  auto file = hs::common::ConfigFile::load(fs::path(HS_SOURCE_DIR) /
+                                           "cases/unresolved/stenosis/throat-85um-paper-scale/case.toml");
+  (void)file->root().section("case").string("type");
+  hs::unresolved::OpenGeometryConfig c = hs::unresolved::parse_open_geometry(*file, false);
+  EXPECT_EQ(c.min_cells_passed, 100000);
+  // A steady, balanced run's results with `removed` cells out: only the scale check can fail.
+  const auto verdict = [&](long removed, bool quick) {
+    c.quick = quick;
+    const nlohmann::json results{{"bookkeeping_exact_every_step", true}, {"cells_injected", removed + 4000},
+                                 {"cells_removed", removed}, {"cells_present", 4000}, {"residence_times", 23.0},
+                                 {"injected_over_owed", 1.0}, {"fluid_balance_pct", 0.0},
+                                 {"domain_hematocrit_halves", {0.037, 0.037}}};
+    hs::common::CheckList checks;
+    hs::unresolved::check_open_geometry(c, results, checks);
+    return checks.exit_code();
+  };
+  EXPECT_EQ(verdict(100000, false), 0);
+  EXPECT_EQ(verdict(99999, false), 1);
+  EXPECT_EQ(verdict(10, true), 0);   // --quick: skipped, not failed
+  EXPECT_NE(parse_error(edited("[numerics]", "[check]\nmin_cells_passed = -1\n\n[numerics]")).find("min_cells_passed"),
+            std::string::npos);
 }
 
 }  // namespace

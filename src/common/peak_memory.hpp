@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
-// The process's peak resident set size, for the benchmarks that report memory.
+// The process's peak resident set size: run summaries and the benchmarks report it.
 #pragma once
 
 #include <fstream>
 #include <string>
 
-namespace hs::bench {
+namespace hs::common {
 
 /// Peak resident set size of this process (VmHWM of /proc/self/status), GiB; 0 where /proc is not available.
 /// VmHWM only grows: in one process it is the largest size measured so far.
-inline double peak_rss_gib() {
+inline double peak_memory_gib() {
   std::ifstream in("/proc/self/status");
   std::string line;
   while (std::getline(in, line)) {
@@ -18,4 +18,4 @@ inline double peak_rss_gib() {
   return 0.0;
 }
 
-}  // namespace hs::bench
+}  // namespace hs::common
