@@ -64,7 +64,6 @@ bool PressureSolver::can_reuse(const CsrMatrix& a) const {
   // The set-up is collective: every rank must make the same choice, so each rank's verdict is reduced.
   const auto local = [&] {
     if (!reuse_.enabled || pcg_ == nullptr || stale_ || !same_pattern(a)) return false;
-    if (!std::isfinite(reuse_.max_diagonal_change)) return true;   // the bound is off (the default)
     std::vector<double>& d = diagonal_work_;
     diagonal_of(a, d);
     for (std::size_t r = 0; r < d.size(); ++r) {

@@ -4,7 +4,6 @@
 
 #include <mpi.h>
 
-#include <limits>
 #include <memory>
 #include <vector>
 
@@ -34,12 +33,10 @@ struct AmgReuse {
   // on the 7-point Laplacian (measured, docs/cfd-dem.md), so a few are cheaper than a set-up every step.
   double max_iteration_growth = 1.5;
   int iteration_slack = 2;
-  // Largest relative change of a diagonal entry against the matrix the hierarchy was built on, beyond which it is
-  // rebuilt whatever the iterations say. Off by default: the iterations measure what matters, and at 0.5 (the
-  // earlier default) a dense suspension with d_p ~ 2 dx (the bifurcation study, Ht 0.2) moved some cell's void
-  // fraction that far every step, so the hierarchy was rebuilt on all 1600 steps of 0.2 s; kept, 1 set-up, 12 %
-  // more PCG iterations and the fluid step 30 % cheaper (docs/cfd-dem.md, "The AMG hierarchy kept").
-  double max_diagonal_change = std::numeric_limits<double>::infinity();
+  // Largest relative change of a diagonal entry against the matrix the hierarchy was built on: beyond it the
+  // coarse operators no longer resemble the fine one (the void fraction of a cell halved, say) and it is rebuilt
+  // whatever the iterations say.
+  double max_diagonal_change = 0.5;
 };
 
 /// PCG + BoomerAMG (hypre). The AMG hierarchy is built by set_matrix() and reused by every solve until
