@@ -135,13 +135,16 @@ TEST(OpenGeometryCase, TheScaleCheckFailsBelowItsCellCountAndIsSkippedWithQuick)
     const nlohmann::json results{{"bookkeeping_exact_every_step", true}, {"cells_injected", removed + 4000},
                                  {"cells_removed", removed}, {"cells_present", 4000}, {"residence_times", 23.0},
                                  {"injected_over_owed", 1.0}, {"fluid_balance_pct", 0.0},
-                                 {"domain_hematocrit_halves", {0.037, 0.037}}};
+                                 {"domain_hematocrit_halves", {0.037, 0.037}},
+                                 // 5 cells back out of the inlet: they do not count as passed
+                                 {"openings", {{{"condition", "flow_rate_inlet"}, {"cells_out", 5}},
+                                               {{"condition", "pressure_outlet"}, {"cells_out", removed - 5}}}}};
     hs::common::CheckList checks;
     hs::unresolved::check_open_geometry(c, results, checks);
     return checks.exit_code();
   };
-  EXPECT_EQ(verdict(100000, false), 0);
-  EXPECT_EQ(verdict(99999, false), 1);
+  EXPECT_EQ(verdict(100005, false), 0);
+  EXPECT_EQ(verdict(100004, false), 1);
   EXPECT_EQ(verdict(10, true), 0);   // --quick: skipped, not failed
   EXPECT_NE(parse_error(edited("[numerics]", "[check]\nmin_cells_passed = -1\n\n[numerics]")).find("min_cells_passed"),
             std::string::npos);
