@@ -3,8 +3,8 @@
 #include "unresolved/cases/tube_plasma.hpp"
 
 #include <chrono>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -13,21 +13,21 @@
 
 #include "common/check_list.hpp"
 #include "common/errors.hpp"
+#include "common/fluid_properties.hpp"
 #include "common/geometry/tube.hpp"
 #include "common/io/csv_writer.hpp"
 #include "common/io/vtk_image.hpp"
 #include "common/io/vtk_polydata.hpp"
 #include "common/log.hpp"
+#include "common/parallel/cartesian_decomposition.hpp"
 #include "common/progress.hpp"
 #include "common/run_context.hpp"
 #include "common/run_folder.hpp"
 #include "common/time_loop.hpp"
 #include "common/units/unit_converter.hpp"
-#include "common/parallel/cartesian_decomposition.hpp"
 #include "unresolved/cases/grid_budget.hpp"
 #include "unresolved/cases/slab_gather.hpp"
 #include "unresolved/fvm/fvm_solver.hpp"
-#include "common/fluid_properties.hpp"
 
 namespace hs::unresolved {
 namespace {
