@@ -54,6 +54,13 @@ void FvmSolver::write_state(hs::common::Checkpoint& cp, const std::string& prefi
   cp.put(prefix + "scalars", scalars);
   const std::vector<std::int64_t> steps{steps_};
   cp.put(prefix + "steps", steps);
+  // The AMG hierarchy in use: without it a resume would solve with a fresh one where the uninterrupted run keeps
+  // its aged one, and the runs would part by the solver tolerance (grown by the DEM's chaos).
+  const AmgCheckpoint amg = pressure_.checkpoint();
+  cp.put(prefix + "pressure_amg_setup_matrix", amg.setup_values);
+  const std::vector<std::int64_t> amg_state{amg.fresh_iterations, amg.fresh ? 1 : 0, amg.stale ? 1 : 0, amg.setups,
+                                            amg.reuses};
+  cp.put(prefix + "pressure_amg_state", amg_state);
 }
 
 void FvmSolver::read_state(const hs::common::Checkpoint& cp, const std::string& prefix) {
@@ -80,6 +87,13 @@ void FvmSolver::read_state(const hs::common::Checkpoint& cp, const std::string& 
   const std::vector<std::int64_t>& steps = cp.integers(prefix + "steps");
   if (steps.size() != 1) throw hs::common::ConfigError("checkpoint: \"" + prefix + "steps\" must hold one value");
   steps_ = steps[0];
+  if (cp.has(prefix + "pressure_amg_state")) {   // absent from checkpoints written before 2026-12-07: fresh hierarchy
+    const std::vector<std::int64_t>& amg = cp.integers(prefix + "pressure_amg_state");
+    if (amg.size() != 5) throw hs::common::ConfigError("checkpoint: \"" + prefix + "pressure_amg_state\" must hold 5 values");
+    pressure_.restore(AmgCheckpoint{.setup_values = cp.doubles(prefix + "pressure_amg_setup_matrix"),
+                                    .fresh_iterations = amg[0], .fresh = amg[1] != 0, .stale = amg[2] != 0,
+                                    .setups = amg[3], .reuses = amg[4]});
+  }
   coefficients_dirty_ = true;
   if (variable_viscosity_) fill_cell_ghosts(visc_);
   update_viscous_force();   // derived from the restored velocity and viscosity: a resumed run samples the same stress

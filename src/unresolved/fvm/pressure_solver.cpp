@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "common/errors.hpp"
 #include "unresolved/fvm/hypre_ij.hpp"
@@ -51,6 +52,7 @@ void PressureSolver::destroy() {
 
 void PressureSolver::set_matrix(const CsrMatrix& a) {
   check_row_layout(comm_, a, "PressureSolver");
+  if (restored_ != nullptr) rebuild_restored(a);
   if (can_reuse(a)) {
     a_->update_values(a.values);
     ++reuses_;
@@ -64,6 +66,7 @@ bool PressureSolver::can_reuse(const CsrMatrix& a) const {
   // The set-up is collective: every rank must make the same choice, so each rank's verdict is reduced.
   const auto local = [&] {
     if (!reuse_.enabled || pcg_ == nullptr || stale_ || !same_pattern(a)) return false;
+    if (!std::isfinite(reuse_.max_diagonal_change)) return true;
     std::vector<double>& d = diagonal_work_;
     diagonal_of(a, d);
     for (std::size_t r = 0; r < d.size(); ++r) {
@@ -79,14 +82,14 @@ bool PressureSolver::can_reuse(const CsrMatrix& a) const {
 }
 
 bool PressureSolver::same_pattern(const CsrMatrix& a) const {
-  return a.rows == pattern_.rows && a.first_row == pattern_.first_row && a.row_ptr == pattern_.row_ptr &&
-         a.cols == pattern_.cols;
+  return a.rows == setup_matrix_.rows && a.first_row == setup_matrix_.first_row &&
+         a.row_ptr == setup_matrix_.row_ptr && a.cols == setup_matrix_.cols;
 }
 
 void PressureSolver::build(const CsrMatrix& a) {
   destroy();
   a_ = std::make_unique<HypreMatrix>(comm_, a);
-  pattern_ = CsrMatrix{.rows = a.rows, .first_row = a.first_row, .row_ptr = a.row_ptr, .cols = a.cols, .values = {}};
+  setup_matrix_ = a;
   b_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
   x_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
   r_ = std::make_unique<HypreVector>(comm_, a.first_row, a.rows);
@@ -123,6 +126,38 @@ void PressureSolver::build(const CsrMatrix& a) {
   stale_ = false;
   fresh_iterations_ = 0;
   diagonal_of(a, setup_diagonal_);
+}
+
+AmgCheckpoint PressureSolver::checkpoint() const {
+  return AmgCheckpoint{.setup_values = pcg_ != nullptr ? setup_matrix_.values : std::vector<double>{},
+                       .fresh_iterations = fresh_iterations_, .fresh = fresh_, .stale = stale_,
+                       .setups = setups_, .reuses = reuses_};
+}
+
+void PressureSolver::restore(AmgCheckpoint saved) {
+  destroy();
+  setups_ = saved.setups;
+  reuses_ = saved.reuses;
+  restored_ = std::make_unique<AmgCheckpoint>(std::move(saved));
+}
+
+void PressureSolver::rebuild_restored(const CsrMatrix& a) {
+  const std::unique_ptr<AmgCheckpoint> saved = std::move(restored_);
+  if (saved->setup_values.empty()) return;   // saved before the first set-up: build as a fresh run would
+  int mine = saved->setup_values.size() == a.values.size() ? 0 : 1;
+  int any = 0;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_);
+  if (any != 0) {
+    throw hs::common::ConfigError("checkpoint: the pressure solver's saved matrix does not fit this grid's (a "
+                                  "checkpoint of another case or resolution)");
+  }
+  CsrMatrix setup{.rows = a.rows, .first_row = a.first_row, .row_ptr = a.row_ptr, .cols = a.cols,
+                  .values = saved->setup_values};
+  build(setup);
+  fresh_iterations_ = static_cast<int>(saved->fresh_iterations);
+  fresh_ = saved->fresh;
+  stale_ = saved->stale;
+  setups_ = saved->setups;   // the rebuild is the saved run's set-up, not a new one
 }
 
 int PressureSolver::solve(const std::vector<double>& b, std::vector<double>& x, const SolveTolerance& tol) {
