@@ -58,8 +58,8 @@ void FvmSolver::write_state(hs::common::Checkpoint& cp, const std::string& prefi
   // its aged one, and the runs would part by the solver tolerance (grown by the DEM's chaos).
   const AmgCheckpoint amg = pressure_.checkpoint();
   cp.put(prefix + "pressure_amg_setup_matrix", amg.setup_values);
-  const std::vector<std::int64_t> amg_state{amg.fresh_iterations, amg.fresh ? 1 : 0, amg.stale ? 1 : 0, amg.setups,
-                                            amg.reuses};
+  const std::vector<std::int64_t> amg_state{amg.built ? 1 : 0, amg.fresh_iterations, amg.fresh ? 1 : 0,
+                                            amg.stale ? 1 : 0, amg.setups, amg.reuses};
   cp.put(prefix + "pressure_amg_state", amg_state);
 }
 
@@ -89,10 +89,13 @@ void FvmSolver::read_state(const hs::common::Checkpoint& cp, const std::string& 
   steps_ = steps[0];
   if (cp.has(prefix + "pressure_amg_state")) {   // absent from checkpoints written before 2026-12-07: fresh hierarchy
     const std::vector<std::int64_t>& amg = cp.integers(prefix + "pressure_amg_state");
-    if (amg.size() != 5) throw hs::common::ConfigError("checkpoint: \"" + prefix + "pressure_amg_state\" must hold 5 values");
-    pressure_.restore(AmgCheckpoint{.setup_values = cp.doubles(prefix + "pressure_amg_setup_matrix"),
-                                    .fresh_iterations = amg[0], .fresh = amg[1] != 0, .stale = amg[2] != 0,
-                                    .setups = amg[3], .reuses = amg[4]});
+    if (amg.size() != 6) {
+      throw hs::common::ConfigError("checkpoint: \"" + prefix + "pressure_amg_state\" must hold 6 values");
+    }
+    pressure_.restore(AmgCheckpoint{.built = amg[0] != 0,
+                                    .setup_values = cp.doubles(prefix + "pressure_amg_setup_matrix"),
+                                    .fresh_iterations = amg[1], .fresh = amg[2] != 0, .stale = amg[3] != 0,
+                                    .setups = amg[4], .reuses = amg[5]});
   }
   coefficients_dirty_ = true;
   if (variable_viscosity_) fill_cell_ghosts(visc_);

@@ -129,7 +129,9 @@ void PressureSolver::build(const CsrMatrix& a) {
 }
 
 AmgCheckpoint PressureSolver::checkpoint() const {
-  return AmgCheckpoint{.setup_values = pcg_ != nullptr ? setup_matrix_.values : std::vector<double>{},
+  if (restored_ != nullptr) return *restored_;   // saved again before the restored hierarchy was rebuilt
+  return AmgCheckpoint{.built = pcg_ != nullptr,
+                       .setup_values = pcg_ != nullptr ? setup_matrix_.values : std::vector<double>{},
                        .fresh_iterations = fresh_iterations_, .fresh = fresh_, .stale = stale_,
                        .setups = setups_, .reuses = reuses_};
 }
@@ -143,7 +145,7 @@ void PressureSolver::restore(AmgCheckpoint saved) {
 
 void PressureSolver::rebuild_restored(const CsrMatrix& a) {
   const std::unique_ptr<AmgCheckpoint> saved = std::move(restored_);
-  if (saved->setup_values.empty()) return;   // saved before the first set-up: build as a fresh run would
+  if (!saved->built) return;   // saved before the first set-up: build as a fresh run would
   int mine = saved->setup_values.size() == a.values.size() ? 0 : 1;
   int any = 0;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_);

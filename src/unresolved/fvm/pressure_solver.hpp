@@ -47,7 +47,8 @@ struct AmgReuse {
 /// run would have used: the values of the matrix it was built on (its pattern is the next matrix's: the grid's) and
 /// the reuse bookkeeping. BoomerAMG's set-up is deterministic, so a rebuild on those values is the same hierarchy.
 struct AmgCheckpoint {
-  std::vector<double> setup_values;   // this rank's; empty when no hierarchy was built yet
+  bool built = false;                 // a hierarchy existed (the same on every rank; a rank may hold no rows)
+  std::vector<double> setup_values;   // this rank's rows' entries
   std::int64_t fresh_iterations = 0;
   bool fresh = false;
   bool stale = false;
