@@ -38,7 +38,7 @@ struct AmgReuse {
   // Largest relative change of a diagonal entry against the matrix the hierarchy was built on, beyond which it is
   // rebuilt whatever the iterations say. Off by default: in dense suspensions some cell's void fraction always
   // moves that much as spheres cross grid cells, so a bound of 0.5 rebuilt the hierarchy on every step of the
-  // bifurcation study (Ht 0.2) for 13% fewer PCG iterations, at 30% more fluid-step time (docs/cfd-dem.md); the
+  // bifurcation study (Ht 0.2) for 11% fewer PCG iterations at 43% more fluid-step time (docs/cfd-dem.md); the
   // iteration bound above already catches a hierarchy that stopped paying.
   double max_diagonal_change = std::numeric_limits<double>::infinity();
 };
