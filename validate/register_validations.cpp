@@ -5,6 +5,7 @@
 #include "validate/pries_validation.hpp"
 #include "validate/resolved_dataset_validation.hpp"
 #include "validate/stretching_validation.hpp"
+#include "validate/tank_treading_validation.hpp"
 
 
 namespace hs::app {
@@ -17,6 +18,7 @@ std::map<std::string, TaskEntry> validations() {
   r["pries-wall-relative"] = {"the pries table with the Haberman-Sayre factor relative to the learned closures' 50 um tube", hs::unresolved::validate_pries_wall_relative};
   r["lift-transfer"] = {"the learned lift closure (R_c = 25 um) vs resolved runs at R_c = 15 um (data/resolved/transfer-r15; --closures FILE)", hs::closures::validate_lift_transfer};
   r["resolved-dataset"] = {"the campaign's data/resolved/dataset.csv: every (Re, r*) row, the acceptance rules, ranges vs the seed paper", hs::campaign::validate_resolved_dataset};
+  r["tank-treading"] = {"one RBC's tank-treading frequency in shear vs Fischer & Korzeniewski 2015 (data/resolved-shear/fischer-korzeniewski; its campaign)", hs::resolved::validate_tank_treading};
   return r;
 }
 

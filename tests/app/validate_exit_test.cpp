@@ -62,6 +62,48 @@ TEST(ValidateExitCodes, TheCommittedDatasetFailsWhereItIsKnownToFail) {
   EXPECT_TRUE(says(r, "FAILED  Re_p inside the paper's range")) << r.output;
 }
 
+/// The tank-treading campaign's dataset at the Ca of Fischer & Korzeniewski's six bins (Ca = 0.0452 x gamma_dot): every
+/// run tank-treading and settled at the bin's measured mean f/gamma_dot, its rate under its Keller-Skalak bound;
+/// `change` alters row `row` ("tumbling", "unsettled", "off": 3 SDs above the mean, "fast": above the bound).
+fs::path write_tank_treading_dataset(const std::string& name, int row, const std::string& change) {
+  const fs::path dir = fs::temp_directory_path() / ("hs_validate_tt_" + name);
+  fs::create_directories(dir);
+  const fs::path csv = dir / "dataset.csv";
+  std::ofstream out(csv);
+  out << "ca,shear_rate_1_s,flow_mode,settled,f_over_shear_rate,inclination_deg,di,keller_skalak_bound_rad_s,re_p\n";
+  const double shear_rates[] = {8.2, 16.9, 32.4, 65.2, 131.6, 258.0};
+  const double means[] = {0.0398, 0.0368, 0.0330, 0.0287, 0.0260, 0.0254};
+  const double sds[] = {0.0059, 0.0050, 0.0063, 0.0057, 0.0036, 0.0033};
+  for (int i = 0; i < 6; ++i) {
+    const double ca = 28.9e-3 * shear_rates[i] * 3.91e-6 / 2.5e-6;
+    const double gamma = 624.0 * ca;   // the analogue's shear rate
+    const double f = i == row && change == "off" ? means[i] + 3.0 * sds[i] : means[i];
+    const double bound = i == row && change == "fast" ? 0.5 * 6.2832 * f * gamma : 0.2 * gamma;
+    out << ca << ',' << gamma << ',' << (i == row && change == "tumbling" ? "tumbling" : "tank-treading") << ','
+        << (i == row && change == "unsettled" ? "false" : "true") << ',' << f << ",12.0,0.45," << bound << ",0.01\n";
+  }
+  return csv;
+}
+
+TEST(ValidateExitCodes, TankTreadingPassesOnlyATankTreadingSettledCellInsideTheScatter) {
+  const Result good = run("validate tank-treading --dataset " + write_tank_treading_dataset("good", -1, "").string());
+  EXPECT_EQ(good.code, 0) << good.output;
+  const Result tumbling = run("validate tank-treading --dataset " + write_tank_treading_dataset("tb", 0, "tumbling").string());
+  EXPECT_EQ(tumbling.code, 1) << tumbling.output;
+  EXPECT_TRUE(says(tumbling, "FAILED  8.2 1/s (Ca 0.371): tank-treading")) << tumbling.output;
+  const Result unsettled = run("validate tank-treading --dataset " + write_tank_treading_dataset("us", 2, "unsettled").string());
+  EXPECT_EQ(unsettled.code, 1) << unsettled.output;
+  EXPECT_TRUE(says(unsettled, "not settled: no agreement claimed")) << unsettled.output;
+  const Result off = run("validate tank-treading --dataset " + write_tank_treading_dataset("off", 3, "off").string());
+  EXPECT_EQ(off.code, 1) << off.output;
+  EXPECT_TRUE(says(off, "z = +3.00")) << off.output;
+  const Result fast = run("validate tank-treading --dataset " + write_tank_treading_dataset("fast", 5, "fast").string());
+  EXPECT_EQ(fast.code, 1) << fast.output;
+  EXPECT_TRUE(says(fast, "FAILED  258 1/s (Ca 11.7): under the Keller-Skalak bound")) << fast.output;
+  const Result missing = run("validate tank-treading --dataset /nonexistent/dataset.csv");
+  EXPECT_EQ(missing.code, 1) << missing.output;
+}
+
 TEST(ValidateExitCodes, StretchingQuickPassesAndFailsInANarrowerBand) {
   const Result r = run("validate stretching --quick");
   EXPECT_EQ(r.code, 0) << r.output;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <fmt/format.h>
@@ -33,6 +34,14 @@ void check_shear(const PlateCellConfig& c, const nlohmann::json& r, const std::v
     const double bound = 0.5 * c.shear_rate_1_s;
     checks.expect("membrane rate within the Keller-Skalak bound gamma_dot / 2", rate <= bound,
                   fmt::format("{:.4g} rad/s, bound {:.4g} rad/s", rate, bound));
+    // The same bound for the cell's own axes (#26): its rate over the last whole revolutions (the second half's
+    // without one) against gamma_dot a1 a2 / (a1^2 + a2^2) from the DI over that window.
+    const double settled_hz = r.value("tank_treading_frequency_settled_hz", 0.0);
+    const double own_rate = settled_hz > 0.0 ? 2.0 * std::numbers::pi * settled_hz : rate;
+    const double own_bound = r.value("keller_skalak_bound_rad_s", bound);
+    checks.expect("membrane rate within the Keller-Skalak bound of the measured axes", own_rate <= own_bound,
+                  fmt::format("{:.4g} rad/s, bound {:.4g} rad/s at DI {:.3f}", own_rate, own_bound,
+                              r.value("di_settled", r.value("di_mean", 0.0))));
   }
   if (c.expect_flow_mode.empty()) return;
   const std::string mode_name = fmt::format("flow mode {}", c.expect_flow_mode);

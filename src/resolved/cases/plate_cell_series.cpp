@@ -8,6 +8,7 @@
 
 #include "common/dimensionless_groups.hpp"
 #include "resolved/measure/flow_mode.hpp"
+#include "resolved/measure/whole_revolutions.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -17,6 +18,10 @@ constexpr std::size_t kEnergyPackedFields = 19;   // checkpoints with the energy
 constexpr std::size_t kPackedFields = 21;      // now: a header -kPackedFields (a time is never negative), then samples
 /// Share of the series treated as start-up before averages (mean inclination, DI, tank-treading rate) are taken.
 constexpr double kTransientFraction = 0.5;
+
+/// Two consecutive whole revolutions of the marker that take the same time within this share make a settled
+/// tank-treading state: the 2 % of #26's criterion for what numerical knobs may change in the frequency.
+constexpr double kRevolutionTolerance = 0.02;
 
 std::size_t first_settled(std::size_t n) { return static_cast<std::size_t>(std::floor(kTransientFraction * static_cast<double>(n))); }
 
@@ -198,7 +203,36 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["intrinsic_viscosity"] = sum_v > 0.0 ? (sum_s / n) / (mu * config_.shear_rate_1_s * sum_v / n) : 0.0;
   r["period_s"] = mode == FlowMode::tumbling ? tumble.period_s
                   : (mode == FlowMode::tank_treading && rate != 0.0 ? 2.0 * std::numbers::pi / std::abs(rate) : 0.0);
+  settled_tank_treading(mode, t, phase, from, r);
   return r;
+}
+
+void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const double> t, std::span<const double> phase,
+                                            std::size_t from, nlohmann::json& r) const {
+  // The last two whole revolutions of the marker after the transient: settled when they take the same time, and the
+  // window of the means a validation compares (whole revolutions: whole swings of the inclination and the DI).
+  const WholeRevolutions rev = whole_revolutions(t, phase, from);
+  const bool tank_treading = mode == FlowMode::tank_treading;
+  r["revolution_periods_s"] = rev.periods_s;
+  r["tank_treading_settled"] = tank_treading && rev.settled(kRevolutionTolerance);
+  r["tank_treading_settled_tolerance"] = kRevolutionTolerance;
+  const double rate = tank_treading ? rev.rate_rad_s() : 0.0;
+  r["tank_treading_frequency_settled_hz"] = rate / (2.0 * std::numbers::pi);
+  r["tank_treading_frequency_over_shear_rate"] = rate / (2.0 * std::numbers::pi) / config_.shear_rate_1_s;
+  double sum_incl = 0.0, sum_di = 0.0, n = 0.0;
+  for (const auto& s : samples_) {
+    if (s.time_s < rev.window_start_s || s.time_s > rev.window_end_s) continue;
+    sum_incl += s.inclination_rad;
+    sum_di += s.di;
+    n += 1.0;
+  }
+  const double di = n > 0.0 ? sum_di / n : r.value("di_mean", 0.0);
+  r["mean_inclination_settled_deg"] = n > 0.0 ? sum_incl / n * 180.0 / std::numbers::pi : r.value("mean_inclination_deg", 0.0);
+  r["di_settled"] = di;
+  r["settled_window_s"] = {rev.window_start_s, rev.window_end_s};
+  // The bound of the measured axes: DI's longest and shortest extents, which for a tank-treading RBC both lie in the
+  // shear plane (its axis of symmetry turns into that plane).
+  r["keller_skalak_bound_rad_s"] = keller_skalak_bound(config_.shear_rate_1_s, di);
 }
 
 nlohmann::json PlateCellSeries::migration_results() const {

@@ -11,6 +11,7 @@
 
 #include "common/vec3.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
+#include "resolved/measure/flow_mode.hpp"
 #include "resolved/membrane/membrane_energy_balance.hpp"
 
 namespace hs::resolved {
@@ -47,6 +48,8 @@ class PlateCellSeries {
   [[nodiscard]] nlohmann::json shear_results() const;
   [[nodiscard]] nlohmann::json migration_results() const;
   [[nodiscard]] nlohmann::json groups() const;
+  void settled_tank_treading(FlowMode mode, std::span<const double> t, std::span<const double> phase, std::size_t from,
+                             nlohmann::json& r) const;
 
   PlateCellConfig config_;
   std::vector<PlateCellSample> samples_;

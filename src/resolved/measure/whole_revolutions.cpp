@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#include "resolved/measure/whole_revolutions.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace hs::resolved {
+
+double WholeRevolutions::rate_rad_s() const {
+  if (periods_s.empty() || window_end_s <= window_start_s) return 0.0;
+  const double turns = periods_s.size() >= 2 ? 2.0 : 1.0;
+  return 2.0 * std::numbers::pi * turns / (window_end_s - window_start_s);
+}
+
+bool WholeRevolutions::settled(double tolerance) const {
+  return periods_s.size() >= 2 && std::abs(periods_s[1] - periods_s[0]) <= tolerance * periods_s[0];
+}
+
+WholeRevolutions whole_revolutions(std::span<const double> time_s, std::span<const double> phase_rad, std::size_t from) {
+  WholeRevolutions r;
+  const std::size_t n = std::min(time_s.size(), phase_rad.size());
+  if (n < 2 || from + 1 >= n) return r;
+  const double end_phase = phase_rad[n - 1];
+  double end_s = time_s[n - 1];
+  std::vector<double> ends{end_s};   // the end times of the revolutions, the last first
+  int turns = 1;
+  for (std::size_t i = n - 1; i > from; --i) {
+    // Scanning back: the revolution `turns` ends (going back: begins) where |phase - end phase| reaches 2 pi turns.
+    const double level = 2.0 * std::numbers::pi * turns;
+    const double a = std::abs(phase_rad[i] - end_phase);
+    const double b = std::abs(phase_rad[i - 1] - end_phase);
+    if (a < level && b >= level) {
+      const double w = (level - a) / (b - a);
+      const double t = time_s[i] + w * (time_s[i - 1] - time_s[i]);
+      r.periods_s.push_back(end_s - t);
+      ends.push_back(t);
+      end_s = t;
+      ++turns;
+    }
+  }
+  if (r.periods_s.empty()) return r;
+  r.window_end_s = ends.front();
+  r.window_start_s = ends[std::min<std::size_t>(2, ends.size() - 1)];
+  return r;
+}
+
+double keller_skalak_bound(double shear_rate_1_s, double deformation_index) {
+  const double ratio = (1.0 + deformation_index) / (1.0 - deformation_index);
+  return shear_rate_1_s * ratio / (1.0 + ratio * ratio);
+}
+
+}  // namespace hs::resolved

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// The tank-treading membrane's revolutions, counted back from the end of a run: their periods say whether the motion
+// has settled into a periodic state, and their window is the one to average over (a swinging cell's inclination and
+// DI repeat twice per revolution, so means over whole revolutions carry no partial-swing bias).
+#pragma once
+
+#include <span>
+#include <vector>
+
+namespace hs::resolved {
+
+struct WholeRevolutions {
+  std::vector<double> periods_s;   // the marker's whole revolutions, the last one first
+  double window_start_s = 0.0;     // start of the last two revolutions (of the last one with only one)
+  double window_end_s = 0.0;
+
+  /// Rate of the last two revolutions (or the only one), rad/s; 0 without a whole revolution.
+  [[nodiscard]] double rate_rad_s() const;
+  /// Whether the last two revolutions took the same time within `tolerance` (relative to the last one).
+  [[nodiscard]] bool settled(double tolerance) const;
+};
+
+/// Whole revolutions of the unwrapped marker phase `phase_rad` (sampled at `time_s`), counted backwards from the last
+/// sample and only over samples from index `from` on (the part after the release transient). A revolution ends where the
+/// phase has moved by 2 pi from the end of the next one (linear interpolation between samples), whichever the sense.
+WholeRevolutions whole_revolutions(std::span<const double> time_s, std::span<const double> phase_rad, std::size_t from);
+
+/// Keller & Skalak (1982, JFM 120:27): a membrane of axes a1 >= a2 in the shear plane tank-treads at most at
+/// gamma_dot a1 a2 / (a1^2 + a2^2); here a1 / a2 = (1 + DI) / (1 - DI) from the deformation index DI = (a1 - a2) / (a1 + a2).
+double keller_skalak_bound(double shear_rate_1_s, double deformation_index);
+
+}  // namespace hs::resolved
