@@ -78,7 +78,7 @@ fs::path write_tank_treading_dataset(const std::string& name, int row, const std
     const double ca = 28.9e-3 * shear_rates[i] * 3.91e-6 / 2.5e-6;
     const double gamma = 624.0 * ca;   // the analogue's shear rate
     const double f = i == row && change == "off" ? means[i] + 3.0 * sds[i] : means[i];
-    const double bound = i == row && change == "fast" ? 0.5 * 6.2832 * f * gamma : 0.2 * gamma;
+    const double bound = i == row && change == "fast" ? 0.5 * 6.2832 * f * gamma : 0.3 * gamma;   // 2 pi f <= 0.25 gamma_dot here
     out << ca << ',' << gamma << ',' << (i == row && change == "tumbling" ? "tumbling" : "tank-treading") << ','
         << (i == row && change == "unsettled" ? "false" : "true") << ',' << f << ",12.0,0.45," << bound << ",0.01\n";
   }
