@@ -62,15 +62,16 @@ TEST(ValidateExitCodes, TheCommittedDatasetFailsWhereItIsKnownToFail) {
   EXPECT_TRUE(says(r, "FAILED  Re_p inside the paper's range")) << r.output;
 }
 
-/// The tank-treading campaign's dataset at the Ca of Fischer & Korzeniewski's six bins (Ca = 0.0452 x gamma_dot): every
-/// run tank-treading and settled at the bin's measured mean f/gamma_dot, its rate under its Keller-Skalak bound;
-/// `change` alters row `row` ("tumbling", "unsettled", "off": 3 SDs above the mean, "fast": above the bound).
-fs::path write_tank_treading_dataset(const std::string& name, int row, const std::string& change) {
+/// The three tank-treading campaigns' datasets (data/resolved-shear layout) at the Ca of Fischer & Korzeniewski's
+/// measured points (Ca = eta_o gamma_dot a / G_s): every run tank-treading and settled at the measured mean, its rate
+/// under its Keller-Skalak bound. `change` alters frequency row `row` ("tumbling", "unsettled", "off": 3 SDs above the
+/// mean, "fast": above the bound) or inclination row `row` of the 104 mPa s series ("flat": 10 deg, the 10.7 medium's).
+fs::path write_tank_treading_datasets(const std::string& name, int row, const std::string& change) {
   const fs::path dir = fs::temp_directory_path() / ("hs_validate_tt_" + name);
-  fs::create_directories(dir);
-  const fs::path csv = dir / "dataset.csv";
-  std::ofstream out(csv);
-  out << "ca,shear_rate_1_s,flow_mode,settled,f_over_shear_rate,inclination_deg,di,keller_skalak_bound_rad_s,re_p\n";
+  const char* header = "ca,shear_rate_1_s,flow_mode,settled,f_over_shear_rate,inclination_deg,di,keller_skalak_bound_rad_s,re_p\n";
+  fs::create_directories(dir / "fischer-korzeniewski");
+  std::ofstream out(dir / "fischer-korzeniewski" / "dataset.csv");
+  out << header;
   const double shear_rates[] = {8.2, 16.9, 32.4, 65.2, 131.6, 258.0};
   const double means[] = {0.0398, 0.0368, 0.0330, 0.0287, 0.0260, 0.0254};
   const double sds[] = {0.0059, 0.0050, 0.0063, 0.0057, 0.0036, 0.0033};
@@ -78,29 +79,50 @@ fs::path write_tank_treading_dataset(const std::string& name, int row, const std
     const double ca = 28.9e-3 * shear_rates[i] * 3.91e-6 / 2.5e-6;
     const double gamma = 624.0 * ca;   // the analogue's shear rate
     const double f = i == row && change == "off" ? means[i] + 3.0 * sds[i] : means[i];
-    const double bound = i == row && change == "fast" ? 0.5 * 6.2832 * f * gamma : 0.3 * gamma;   // 2 pi f <= 0.25 gamma_dot here
+    const double bound = i == row && change == "fast" ? 0.5 * 6.2832 * f * gamma : 0.3 * gamma;   // 2 pi f <= 0.25 gamma_dot
     out << ca << ',' << gamma << ',' << (i == row && change == "tumbling" ? "tumbling" : "tank-treading") << ','
         << (i == row && change == "unsettled" ? "false" : "true") << ',' << f << ",12.0,0.45," << bound << ",0.01\n";
   }
-  return csv;
+  // Inclination inside the donors' range at each point: 10.7 mPa s at 56.249, 122.01, 261.91 1/s; 104 at 3.8486,
+  // 12.215, 38.417 (data/reference/fischer_korzeniewski2015_inclination.csv).
+  const struct { double eta_mPa_s; double rates[3]; double angles[3]; } media[] = {
+      {10.7, {56.249, 122.01, 261.91}, {9.0, 9.0, 9.0}}, {104.0, {3.8486, 12.215, 38.417}, {19.5, 17.5, 15.5}}};
+  for (const auto& m : media) {
+    const fs::path folder = dir / (m.eta_mPa_s == 104.0 ? "fischer-korzeniewski-104" : "fischer-korzeniewski-10.7");
+    fs::create_directories(folder);
+    std::ofstream inc(folder / "dataset.csv");
+    inc << header;
+    for (int i = 0; i < 3; ++i) {
+      const double ca = m.eta_mPa_s * 1e-3 * m.rates[i] * 3.91e-6 / 2.5e-6;
+      const double angle = m.eta_mPa_s == 104.0 && i == row && change == "flat" ? 10.0 : m.angles[i];
+      inc << ca << ',' << 624.0 * ca << ",tank-treading,true,0.03," << angle << ",0.45," << 0.3 * 624.0 * ca << ",0.01\n";
+    }
+  }
+  return dir;
 }
 
 TEST(ValidateExitCodes, TankTreadingPassesOnlyATankTreadingSettledCellInsideTheScatter) {
-  const Result good = run("validate tank-treading --dataset " + write_tank_treading_dataset("good", -1, "").string());
+  const auto validate = [](const std::string& name, int row, const std::string& change) {
+    return run("validate tank-treading --dataset " + write_tank_treading_datasets(name, row, change).string());
+  };
+  const Result good = validate("good", -1, "");
   EXPECT_EQ(good.code, 0) << good.output;
-  const Result tumbling = run("validate tank-treading --dataset " + write_tank_treading_dataset("tb", 0, "tumbling").string());
+  const Result tumbling = validate("tb", 0, "tumbling");
   EXPECT_EQ(tumbling.code, 1) << tumbling.output;
-  EXPECT_TRUE(says(tumbling, "FAILED  8.2 1/s (Ca 0.371): tank-treading")) << tumbling.output;
-  const Result unsettled = run("validate tank-treading --dataset " + write_tank_treading_dataset("us", 2, "unsettled").string());
+  EXPECT_TRUE(says(tumbling, "FAILED  f at 8.2 1/s (Ca 0.371): tank-treading")) << tumbling.output;
+  const Result unsettled = validate("us", 2, "unsettled");
   EXPECT_EQ(unsettled.code, 1) << unsettled.output;
   EXPECT_TRUE(says(unsettled, "not settled: no agreement claimed")) << unsettled.output;
-  const Result off = run("validate tank-treading --dataset " + write_tank_treading_dataset("off", 3, "off").string());
+  const Result off = validate("off", 3, "off");
   EXPECT_EQ(off.code, 1) << off.output;
   EXPECT_TRUE(says(off, "z = +3.00")) << off.output;
-  const Result fast = run("validate tank-treading --dataset " + write_tank_treading_dataset("fast", 5, "fast").string());
+  const Result fast = validate("fast", 5, "fast");
   EXPECT_EQ(fast.code, 1) << fast.output;
-  EXPECT_TRUE(says(fast, "FAILED  258 1/s (Ca 11.7): under the Keller-Skalak bound")) << fast.output;
-  const Result missing = run("validate tank-treading --dataset /nonexistent/dataset.csv");
+  EXPECT_TRUE(says(fast, "FAILED  f at 258 1/s (Ca 11.7): under the Keller-Skalak bound")) << fast.output;
+  const Result flat = validate("flat", 0, "flat");
+  EXPECT_EQ(flat.code, 1) << flat.output;
+  EXPECT_TRUE(says(flat, "FAILED  inclination at 104 mPa s, Ca 0.626: inside the donors' range")) << flat.output;
+  const Result missing = run("validate tank-treading --dataset /nonexistent");
   EXPECT_EQ(missing.code, 1) << missing.output;
 }
 
