@@ -10,7 +10,7 @@
 //  - inclination (...-10.7 and ...-104): three measured shear rates in each medium against the donors' digitised
 //    angles. Band: the donors' range at that shear rate widened by the digitising error (+-0.3 deg); and the angle
 //    larger in the more viscous medium, as measured.
-// Every run must exist, tank-tread, have settled (its last two whole revolutions within 2 %) and turn under the
+// Every run must exist, tank-tread (or swing: the membrane revolves about a body that does not tumble), have settled (its last two whole revolutions within 2 %) and turn under the
 // Keller-Skalak bound of its measured axes. Reads the datasets only: nothing is simulated (the campaigns are resumable
 // and archived). Exit 1 on any failure, naming it. --dataset DIR reads DIR/<campaign>/dataset.csv instead of
 // data/resolved-shear/<campaign>/dataset.csv.
@@ -94,6 +94,8 @@ double model_ca(double eta_o_Pa_s, double shear_rate_1_s) {
 struct Measured {
   bool present = false;
   std::string flow_mode;
+  bool tank_treads = false;        // tank-treading or swinging: the membrane revolves, the body does not tumble
+  double swinging_deg = 0.0;       // half the range of the outline's angle over the settled revolutions
   bool settled = false;
   double f_over_gamma = 0.0;
   double inclination_deg = 0.0;
@@ -111,6 +113,8 @@ Measured find_run(const std::vector<TextRow>& rows, double ca, const fs::path& c
     if (std::abs(number(row, "ca", csv) - ca) > kCaMatch * ca) continue;
     m.present = true;
     m.flow_mode = text(row, "flow_mode");
+    m.tank_treads = text(row, "membrane_tank_treads") == "true";
+    m.swinging_deg = number(row, "swinging_amplitude_deg", csv);
     m.settled = text(row, "settled") == "true";
     m.f_over_gamma = number(row, "f_over_shear_rate", csv);
     m.inclination_deg = number(row, "inclination_deg", csv);
@@ -130,9 +134,9 @@ bool check_run(const std::string& name, const Measured& m, hs::common::CheckList
     checks.expect(name + ": run in the dataset", false, "no row with this Ca (its campaign has not finished it)");
     return false;
   }
-  const bool tank_treading = m.flow_mode == "tank-treading";
-  checks.expect(name + ": tank-treading, as every measured cell", tank_treading, fmt::format("measured {}", m.flow_mode));
-  if (!tank_treading) return false;
+  checks.expect(name + ": the membrane tank-treads (tank-treading or swinging), as in every measured cell", m.tank_treads,
+                fmt::format("measured {}{}", m.flow_mode, m.tank_treads ? fmt::format(", swinging +-{:.1f} deg", m.swinging_deg) : ""));
+  if (!m.tank_treads) return false;
   checks.expect(name + ": settled (last two whole revolutions within 2 %)", m.settled,
                 m.settled ? "yes" : "the revolutions still differ: a longer run (max_jeffery_periods) is needed");
   checks.expect(name + ": under the Keller-Skalak bound of the measured axes", m.rate_rad_s <= m.bound_rad_s,
@@ -161,8 +165,8 @@ nlohmann::json check_frequency(const fs::path& reference, const fs::path& csv, d
   nlohmann::json out = nlohmann::json::array();
   const std::vector<TextRow> rows = fs::exists(csv) ? read_text_table(csv) : std::vector<TextRow>{};
   fmt::print("frequency, {:g} mPa s medium ({})\n", 1e3 * bins.front().eta_o_Pa_s, fs::exists(csv) ? csv.string() : "no dataset");
-  fmt::print("  {:>8} {:>7} {:>14} {:>8} {:>9} {:>17} {:>6} {:>8} {:>6} {:>7}\n", "gamma/s", "Ca", "mode", "settled",
-             "f/gamma", "data mean+-SD", "z", "incl deg", "DI", "Re_p");
+  fmt::print("  {:>8} {:>7} {:>14} {:>8} {:>9} {:>17} {:>6} {:>8} {:>6} {:>6} {:>7}\n", "gamma/s", "Ca", "mode", "settled",
+             "f/gamma", "data mean+-SD", "z", "incl deg", "swing", "DI", "Re_p");
   std::vector<Measured> measured;
   for (const FrequencyBin& b : bins) {
     const double ca = model_ca(b.eta_o_Pa_s, b.shear_rate_1_s);
@@ -171,9 +175,9 @@ nlohmann::json check_frequency(const fs::path& reference, const fs::path& csv, d
     const std::string name = fmt::format("f at {:g} 1/s (Ca {:.3g})", b.shear_rate_1_s, ca);
     const double z = (m.f_over_gamma - b.mean) / b.sd;
     if (m.present) {
-      fmt::print("  {:>8g} {:>7.3f} {:>14} {:>8} {:>9.4f} {:>10.4f}+-{:.4f} {:>6.2f} {:>8.2f} {:>6.3f} {:>7.4f}\n",
+      fmt::print("  {:>8g} {:>7.3f} {:>14} {:>8} {:>9.4f} {:>10.4f}+-{:.4f} {:>6.2f} {:>8.2f} {:>6.1f} {:>6.3f} {:>7.4f}\n",
                  b.shear_rate_1_s, ca, m.flow_mode, m.settled ? "yes" : "no", m.f_over_gamma, b.mean, b.sd, z,
-                 m.inclination_deg, m.di, m.re_p);
+                 m.inclination_deg, m.swinging_deg, m.di, m.re_p);
     }
     if (!check_run(name, m, checks)) continue;
     const double half = kScatterSds * b.sd / tighten;
@@ -184,6 +188,7 @@ nlohmann::json check_frequency(const fs::path& reference, const fs::path& csv, d
     out.push_back({{"shear_rate_experiment_1_s", b.shear_rate_1_s}, {"ca", ca}, {"cells", b.cells},
                    {"f_over_shear_rate_data_mean", b.mean}, {"f_over_shear_rate_data_sd", b.sd},
                    {"f_over_shear_rate", m.f_over_gamma}, {"z", z}, {"flow_mode", m.flow_mode}, {"settled", m.settled},
+                   {"membrane_tank_treads", m.tank_treads}, {"swinging_amplitude_deg", m.swinging_deg},
                    {"inclination_deg", m.inclination_deg}, {"di", m.di}, {"rate_rad_s", m.rate_rad_s},
                    {"keller_skalak_bound_rad_s", m.bound_rad_s}, {"re_p", m.re_p},
                    {"shear_rate_analogue_1_s", m.shear_rate_1_s}});
@@ -241,8 +246,8 @@ nlohmann::json check_inclination(const fs::path& reference, double eta_o_mPa_s, 
     return out;
   }
   const std::vector<TextRow> rows = read_text_table(csv);
-  fmt::print("  {:>8} {:>7} {:>14} {:>8} {:>9} {:>19} {:>6} {:>7}\n", "gamma/s", "Ca", "mode", "settled", "incl deg",
-             "donors [min, max]", "DI", "Re_p");
+  fmt::print("  {:>8} {:>7} {:>14} {:>8} {:>9} {:>19} {:>6} {:>6} {:>7}\n", "gamma/s", "Ca", "mode", "settled",
+             "incl deg", "donors [min, max]", "swing", "DI", "Re_p");
   double sum_model = 0.0, sum_data = 0.0;
   int n = 0;
   for (const TextRow& row : rows) {
@@ -257,9 +262,9 @@ nlohmann::json check_inclination(const fs::path& reference, double eta_o_mPa_s, 
       continue;
     }
     const Measured m = find_run(rows, ca, csv);
-    fmt::print("  {:>8g} {:>7.3f} {:>14} {:>8} {:>9.2f} {:>3} [{:>5.2f}, {:>5.2f}] {:>6.3f} {:>7.4f}\n", p->shear_rate_1_s,
-               ca, m.flow_mode, m.settled ? "yes" : "no", m.inclination_deg, p->donors, p->min_deg, p->max_deg, m.di,
-               m.re_p);
+    fmt::print("  {:>8g} {:>7.3f} {:>14} {:>8} {:>9.2f} {:>3} [{:>5.2f}, {:>5.2f}] {:>6.1f} {:>6.3f} {:>7.4f}\n",
+               p->shear_rate_1_s, ca, m.flow_mode, m.settled ? "yes" : "no", m.inclination_deg, p->donors, p->min_deg,
+               p->max_deg, m.swinging_deg, m.di, m.re_p);
     if (!check_run(name, m, checks)) continue;
     const double centre = 0.5 * (p->min_deg + p->max_deg);
     const double half = (0.5 * (p->max_deg - p->min_deg) + kDigitisingDeg) / tighten;
@@ -276,7 +281,8 @@ nlohmann::json check_inclination(const fs::path& reference, double eta_o_mPa_s, 
     out.push_back({{"eta_o_mPa_s", eta_o_mPa_s}, {"shear_rate_experiment_1_s", p->shear_rate_1_s}, {"ca", ca},
                    {"donors", p->donors}, {"angle_data_min_deg", p->min_deg}, {"angle_data_max_deg", p->max_deg},
                    {"angle_data_mean_deg", p->mean_deg}, {"inclination_deg", m.inclination_deg},
-                   {"flow_mode", m.flow_mode}, {"settled", m.settled}, {"di", m.di}, {"re_p", m.re_p},
+                   {"flow_mode", m.flow_mode}, {"settled", m.settled}, {"membrane_tank_treads", m.tank_treads},
+                   {"swinging_amplitude_deg", m.swinging_deg}, {"di", m.di}, {"re_p", m.re_p},
                    {"f_over_shear_rate", m.f_over_gamma}});
   }
   model_mean_deg = n > 0 ? sum_model / n : 0.0;

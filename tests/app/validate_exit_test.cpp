@@ -68,7 +68,7 @@ TEST(ValidateExitCodes, TheCommittedDatasetFailsWhereItIsKnownToFail) {
 /// mean, "fast": above the bound) or inclination row `row` of the 104 mPa s series ("flat": 10 deg, the 10.7 medium's).
 fs::path write_tank_treading_datasets(const std::string& name, int row, const std::string& change) {
   const fs::path dir = fs::temp_directory_path() / ("hs_validate_tt_" + name);
-  const char* header = "ca,shear_rate_1_s,flow_mode,settled,f_over_shear_rate,inclination_deg,di,keller_skalak_bound_rad_s,re_p\n";
+  const char* header = "ca,shear_rate_1_s,flow_mode,membrane_tank_treads,swinging_amplitude_deg,settled,f_over_shear_rate,inclination_deg,di,keller_skalak_bound_rad_s,re_p\n";
   fs::create_directories(dir / "fischer-korzeniewski");
   std::ofstream out(dir / "fischer-korzeniewski" / "dataset.csv");
   out << header;
@@ -80,7 +80,8 @@ fs::path write_tank_treading_datasets(const std::string& name, int row, const st
     const double gamma = 624.0 * ca;   // the analogue's shear rate
     const double f = i == row && change == "off" ? means[i] + 3.0 * sds[i] : means[i];
     const double bound = i == row && change == "fast" ? 0.5 * 6.2832 * f * gamma : 0.3 * gamma;   // 2 pi f <= 0.25 gamma_dot
-    out << ca << ',' << gamma << ',' << (i == row && change == "tumbling" ? "tumbling" : "tank-treading") << ','
+    const bool tumbling = i == row && change == "tumbling";
+    out << ca << ',' << gamma << ',' << (tumbling ? "tumbling,false" : "tank-treading,true") << ",1.0,"
         << (i == row && change == "unsettled" ? "false" : "true") << ',' << f << ",12.0,0.45," << bound << ",0.01\n";
   }
   // Inclination inside the donors' range at each point: 10.7 mPa s at 56.249, 122.01, 261.91 1/s; 104 at 3.8486,
@@ -95,7 +96,7 @@ fs::path write_tank_treading_datasets(const std::string& name, int row, const st
     for (int i = 0; i < 3; ++i) {
       const double ca = m.eta_mPa_s * 1e-3 * m.rates[i] * 3.91e-6 / 2.5e-6;
       const double angle = m.eta_mPa_s == 104.0 && i == row && change == "flat" ? 10.0 : m.angles[i];
-      inc << ca << ',' << 624.0 * ca << ",tank-treading,true,0.03," << angle << ",0.45," << 0.3 * 624.0 * ca << ",0.01\n";
+      inc << ca << ',' << 624.0 * ca << ",intermediate,true,4.0,true,0.03," << angle << ",0.45," << 0.3 * 624.0 * ca << ",0.01\n";
     }
   }
   return dir;
@@ -109,7 +110,7 @@ TEST(ValidateExitCodes, TankTreadingPassesOnlyATankTreadingSettledCellInsideTheS
   EXPECT_EQ(good.code, 0) << good.output;
   const Result tumbling = validate("tb", 0, "tumbling");
   EXPECT_EQ(tumbling.code, 1) << tumbling.output;
-  EXPECT_TRUE(says(tumbling, "FAILED  f at 8.2 1/s (Ca 0.371): tank-treading")) << tumbling.output;
+  EXPECT_TRUE(says(tumbling, "FAILED  f at 8.2 1/s (Ca 0.371): the membrane tank-treads")) << tumbling.output;
   const Result unsettled = validate("us", 2, "unsettled");
   EXPECT_EQ(unsettled.code, 1) << unsettled.output;
   EXPECT_TRUE(says(unsettled, "not settled: no agreement claimed")) << unsettled.output;

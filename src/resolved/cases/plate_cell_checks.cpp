@@ -27,9 +27,10 @@ void check_shear(const PlateCellConfig& c, const nlohmann::json& r, const std::v
                  hs::common::CheckList& checks) {
   const double simulated_s = samples.empty() ? 0.0 : samples.back().time_s;
   const double jeffery_s = jeffery_period(c.shear_rate_1_s);
-  // Always checked once the mode can be read: a tank-treading membrane of axes a1, a2 in the shear plane turns at
+  // Always checked once the mode can be read: a tank-treading (or swinging) membrane of axes a1, a2 in the shear plane turns at
   // most at gamma_dot a1 a2 / (a1^2 + a2^2) <= gamma_dot / 2 (Keller & Skalak 1982; equality for a sphere).
-  if (simulated_s >= kJefferyPeriodsForMode * jeffery_s && r.value("flow_mode", "") == "tank-treading") {
+  if (simulated_s >= kJefferyPeriodsForMode * jeffery_s &&
+      (r.value("flow_mode", "") == "tank-treading" || r.value("membrane_tank_treads", false))) {
     const double rate = std::abs(r.value("marker_rate_rad_s", 0.0));
     const double bound = 0.5 * c.shear_rate_1_s;
     checks.expect("membrane rate within the Keller-Skalak bound gamma_dot / 2", rate <= bound,

@@ -212,7 +212,10 @@ void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const doubl
   // The last two whole revolutions of the marker after the transient: settled when they take the same time, and the
   // window of the means a validation compares (whole revolutions: whole swings of the inclination and the DI).
   const WholeRevolutions rev = whole_revolutions(t, phase, from);
-  const bool tank_treading = mode == FlowMode::tank_treading;
+  // Tank-treading or swinging (the classifier's "intermediate" when the inclination swings by more than its limit):
+  // the membrane revolves about a body that does not tumble. Both are the tank-treading cells of the experiments.
+  const bool tank_treading = mode != FlowMode::tumbling && mode != FlowMode::steady && !rev.periods_s.empty();
+  r["membrane_tank_treads"] = tank_treading;
   r["revolution_periods_s"] = rev.periods_s;
   r["tank_treading_settled"] = tank_treading && rev.settled(kRevolutionTolerance);
   r["tank_treading_settled_tolerance"] = kRevolutionTolerance;
@@ -220,12 +223,17 @@ void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const doubl
   r["tank_treading_frequency_settled_hz"] = rate / (2.0 * std::numbers::pi);
   r["tank_treading_frequency_over_shear_rate"] = rate / (2.0 * std::numbers::pi) / config_.shear_rate_1_s;
   double sum_incl = 0.0, sum_di = 0.0, n = 0.0;
+  double incl_min = 0.0, incl_max = 0.0;
   for (const auto& s : samples_) {
     if (s.time_s < rev.window_start_s || s.time_s > rev.window_end_s) continue;
+    incl_min = n > 0.0 ? std::min(incl_min, s.inclination_rad) : s.inclination_rad;
+    incl_max = n > 0.0 ? std::max(incl_max, s.inclination_rad) : s.inclination_rad;
     sum_incl += s.inclination_rad;
     sum_di += s.di;
     n += 1.0;
   }
+  // Half the range of the outline's angle over whole revolutions (a swinging cell swings twice per revolution).
+  r["swinging_amplitude_deg"] = 0.5 * (incl_max - incl_min) * 180.0 / std::numbers::pi;
   const double di = n > 0.0 ? sum_di / n : r.value("di_mean", 0.0);
   r["mean_inclination_settled_deg"] = n > 0.0 ? sum_incl / n * 180.0 / std::numbers::pi : r.value("mean_inclination_deg", 0.0);
   r["di_settled"] = di;

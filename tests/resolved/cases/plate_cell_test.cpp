@@ -16,6 +16,7 @@
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
 #include "resolved/measure/flow_mode.hpp"
+#include "resolved/measure/whole_revolutions.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -206,6 +207,53 @@ TEST(TumblingPeriod, ReadsTheJefferyPeriodOfASyntheticOrbit) {
   // Linear interpolation of the crossing times is exact up to the curvature of phi(t) within one sample (1/200 T).
   EXPECT_NEAR(p.period_s, period, 1e-3 * period);
   EXPECT_EQ(to_string(classify_flow_mode(phi, phi)), "tumbling");
+}
+
+TEST(ShearResults, ASwingingCellTankTreadsAndSettlesOverWholeRevolutions) {
+  // A swinging cell: the outline's angle oscillates 0.1 +- 0.25 rad at twice the membrane's rate (range 0.5 rad, over
+  // the classifier's 0.35: "intermediate"), the marker turns clockwise at omega. Sampled like a run (folded angles).
+  const PlateCellConfig c = read(shipped("shear/fischer-korzeniewski"), PlateFlow::shear);
+  const double omega = 0.2 * c.shear_rate_1_s;   // 2 pi f / gamma_dot = 0.2: f / gamma_dot 0.0318
+  PlateCellSeries series(c);
+  const double end = 12.0 * 2.0 * std::numbers::pi / omega;   // 12 revolutions: 6 after the transient half
+  for (int i = 0; i <= 6000; ++i) {
+    PlateCellSample s;
+    s.time_s = end * i / 6000.0;
+    s.inclination_rad = 0.1 + 0.25 * std::sin(2.0 * omega * s.time_s);
+    s.marker_phase_rad = std::atan2(std::sin(-omega * s.time_s), std::cos(-omega * s.time_s));
+    s.di = 0.4 + 0.05 * std::cos(2.0 * omega * s.time_s);
+    series.add(s);
+  }
+  const nlohmann::json r = series.results();
+  EXPECT_EQ(r["flow_mode"], "intermediate");
+  EXPECT_TRUE(r["membrane_tank_treads"]);
+  EXPECT_TRUE(r["tank_treading_settled"]);
+  // Whole revolutions: the rate, the mean angle and DI of a periodic motion exactly (sampling: 500 samples a turn).
+  EXPECT_NEAR(r["tank_treading_frequency_over_shear_rate"].get<double>(), 0.2 / (2.0 * std::numbers::pi), 1e-6);
+  EXPECT_NEAR(r["mean_inclination_settled_deg"].get<double>(), 0.1 * 180.0 / std::numbers::pi, 0.01);
+  EXPECT_NEAR(r["swinging_amplitude_deg"].get<double>(), 0.25 * 180.0 / std::numbers::pi, 0.01);
+  EXPECT_NEAR(r["di_settled"].get<double>(), 0.4, 1e-3);
+  const double bound = keller_skalak_bound(c.shear_rate_1_s, 0.4);   // from the window's DI, 0.4 within 1e-4
+  EXPECT_NEAR(r["keller_skalak_bound_rad_s"].get<double>(), bound, 2e-4 * bound);
+}
+
+TEST(ShearResults, ATumblingCellDoesNotTankTread) {
+  const PlateCellConfig c = read(shipped("shear/fischer-korzeniewski"), PlateFlow::shear);
+  const double omega = 0.3 * c.shear_rate_1_s;
+  PlateCellSeries series(c);
+  for (int i = 0; i <= 3000; ++i) {   // the body and the marker turn together
+    PlateCellSample s;
+    s.time_s = 1e-4 * i;
+    const double a = std::atan2(std::sin(-omega * s.time_s), std::cos(-omega * s.time_s));
+    s.marker_phase_rad = a;
+    s.inclination_rad = a > std::numbers::pi / 2 ? a - std::numbers::pi : (a <= -std::numbers::pi / 2 ? a + std::numbers::pi : a);
+    series.add(s);
+  }
+  const nlohmann::json r = series.results();
+  EXPECT_EQ(r["flow_mode"], "tumbling");
+  EXPECT_FALSE(r["membrane_tank_treads"]);
+  EXPECT_FALSE(r["tank_treading_settled"]);
+  EXPECT_EQ(r["tank_treading_frequency_settled_hz"].get<double>(), 0.0);
 }
 
 /// The shipped migration case's checks on a synthetic centroid track y(t) / H (samples every 1 ms from the release,
