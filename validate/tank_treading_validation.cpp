@@ -6,7 +6,8 @@
 //    28.9 mPa s medium against the frequencies of 225 cells. Band: the bin's mean +- 2 SD, the range that holds ~95 %
 //    of single cells (their SD, 12-22 % of the mean, is the spread between cells, far above the error of a bin's mean;
 //    one model cell is one typical cell, not the mean of many). Across the bins f / gamma_dot must fall from the lowest
-//    to the highest shear rate, as measured (0.0398 -> 0.0254, 7 standard errors apart);
+//    to the highest shear rate, as measured (0.0398 -> 0.0254, 7 standard errors apart). The same campaign with the
+//    cytoplasm as viscous as the medium (...-ratio-1) is printed beside it, unchecked (a sensitivity study);
 //  - inclination (...-10.7 and ...-104): three measured shear rates in each medium against the donors' digitised
 //    angles. Band: the donors' range at that shear rate widened by the digitising error (+-0.3 deg); and the angle
 //    larger in the more viscous medium, as measured.
@@ -206,6 +207,32 @@ nlohmann::json check_frequency(const fs::path& reference, const fs::path& csv, d
   return out;
 }
 
+/// The frequency campaign rerun with the cytoplasm as viscous as the medium (ratio 1): printed beside the healthy cell,
+/// never checked against the data (a sensitivity study: the cytoplasm's share of the frequency).
+nlohmann::json report_ratio_1(const fs::path& reference, const fs::path& csv) {
+  nlohmann::json out = nlohmann::json::array();
+  if (!fs::exists(csv)) {
+    fmt::print("sensitivity, viscosity ratio 1 (not a validation): no dataset ({})\n", csv.string());
+    return out;
+  }
+  const std::vector<TextRow> rows = read_text_table(csv);
+  fmt::print("sensitivity, viscosity ratio 1 (not a validation; {})\n", csv.string());
+  fmt::print("  {:>8} {:>7} {:>14} {:>8} {:>9} {:>8} {:>6} {:>6}\n", "gamma/s", "Ca", "mode", "settled", "f/gamma",
+             "incl deg", "swing", "DI");
+  for (const TextRow& row : read_text_table(reference)) {
+    const double rate = number(row, "shear_rate_mean_per_s", reference);
+    const double ca = model_ca(1e-3 * number(row, "eta_o_mPa_s", reference), rate);
+    const Measured m = find_run(rows, ca, csv);
+    if (!m.present) continue;
+    fmt::print("  {:>8g} {:>7.3f} {:>14} {:>8} {:>9.4f} {:>8.2f} {:>6.1f} {:>6.3f}\n", rate, ca, m.flow_mode,
+               m.settled ? "yes" : "no", m.f_over_gamma, m.inclination_deg, m.swinging_deg, m.di);
+    out.push_back({{"shear_rate_experiment_1_s", rate}, {"ca", ca}, {"flow_mode", m.flow_mode}, {"settled", m.settled},
+                   {"membrane_tank_treads", m.tank_treads}, {"f_over_shear_rate", m.f_over_gamma},
+                   {"inclination_deg", m.inclination_deg}, {"swinging_amplitude_deg", m.swinging_deg}, {"di", m.di}});
+  }
+  return out;
+}
+
 struct InclinationPoint {
   double shear_rate_1_s = 0.0;
   int donors = 0;
@@ -308,6 +335,8 @@ int validate_tank_treading(const hs::common::TaskOptions& options) {
   nlohmann::json result = {{"validation", "tank-treading"}, {"datasets", datasets.string()}};
   result["frequency"] = check_frequency(reference / "fischer_korzeniewski2015_ttf_binned.csv", frequency_csv,
                                         options.tighten, checks);
+  result["frequency_viscosity_ratio_1"] = report_ratio_1(reference / "fischer_korzeniewski2015_ttf_binned.csv",
+                                                        datasets / "fischer-korzeniewski-ratio-1" / "dataset.csv");
   std::vector<double> model_means, data_means;
   nlohmann::json inclination = nlohmann::json::array();
   for (const double eta : kInclinationMedia) {
