@@ -6,6 +6,7 @@
 #include "validate/resolved_dataset_validation.hpp"
 #include "validate/stretching_validation.hpp"
 #include "validate/tank_treading_validation.hpp"
+#include "validate/tumbling_threshold_validation.hpp"
 
 
 namespace hs::app {
@@ -19,6 +20,7 @@ std::map<std::string, TaskEntry> validations() {
   r["lift-transfer"] = {"the learned lift closure (R_c = 25 um) vs resolved runs at R_c = 15 um (data/resolved/transfer-r15; --closures FILE)", hs::closures::validate_lift_transfer};
   r["resolved-dataset"] = {"the campaign's data/resolved/dataset.csv: every (Re, r*) row, the acceptance rules, ranges vs the seed paper", hs::campaign::validate_resolved_dataset};
   r["tank-treading"] = {"one RBC's tank-treading frequency in shear vs Fischer & Korzeniewski 2015 (data/resolved-shear/fischer-korzeniewski; its campaign)", hs::resolved::validate_tank_treading};
+  r["tumbling-threshold"] = {"one RBC's tumbling to tank-treading transition in shear vs Fischer & Korzeniewski 2013 (data/resolved-shear/threshold-23.9; its campaign)", hs::resolved::validate_tumbling_threshold};
   return r;
 }
 

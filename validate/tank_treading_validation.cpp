@@ -21,7 +21,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <string>
@@ -31,16 +30,19 @@
 #include <nlohmann/json.hpp>
 
 #include "common/check_list.hpp"
-#include "common/errors.hpp"
-#include "common/io/csv_writer.hpp"
 #include "common/run_folder.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
+#include "validate/text_table.hpp"
 
 namespace hs::resolved {
 namespace {
 
 namespace fs = std::filesystem;
+using hs::validate::number;
+using hs::validate::read_text_table;
+using hs::validate::text;
+using hs::validate::TextRow;
 
 /// Bands of f / gamma_dot: the bin's mean +- this many of its cell-to-cell SDs.
 constexpr double kScatterSds = 2.0;
@@ -50,41 +52,6 @@ constexpr double kDigitisingDeg = 0.3;
 constexpr double kCaMatch = 0.01;
 /// The media of the inclination series (mPa s) and their campaigns' dataset folders.
 constexpr double kInclinationMedia[] = {10.7, 104.0};
-
-/// A CSV file as text cells under their column names ('#' lines skipped).
-using TextRow = std::map<std::string, std::string>;
-
-std::vector<TextRow> read_text_table(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw common::ConfigError(fmt::format("{}: cannot read it", file.string()));
-  std::vector<TextRow> rows;
-  std::vector<std::string> header;
-  for (std::string line; std::getline(in, line);) {
-    if (line.find_first_not_of(" \r") == std::string::npos || line[0] == '#') continue;
-    const std::vector<std::string> cells = common::split_csv_line(line);
-    if (header.empty()) {
-      header = cells;
-      continue;
-    }
-    TextRow row;
-    for (std::size_t c = 0; c < header.size() && c < cells.size(); ++c) row[header[c]] = cells[c];
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-double number(const TextRow& row, const std::string& column, const fs::path& file) {
-  const auto it = row.find(column);
-  if (it == row.end() || it->second.empty()) {
-    throw common::ConfigError(fmt::format("{}: a row has no value in column '{}'", file.string(), column));
-  }
-  return std::strtod(it->second.c_str(), nullptr);
-}
-
-std::string text(const TextRow& row, const std::string& column) {
-  const auto it = row.find(column);
-  return it == row.end() ? std::string() : it->second;
-}
 
 /// The model's capillary number at a measured point: eta_o gamma_dot a / G_s with its own a and G_s.
 double model_ca(double eta_o_Pa_s, double shear_rate_1_s) {

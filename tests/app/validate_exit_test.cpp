@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -124,6 +125,40 @@ TEST(ValidateExitCodes, TankTreadingPassesOnlyATankTreadingSettledCellInsideTheS
   EXPECT_EQ(flat.code, 1) << flat.output;
   EXPECT_TRUE(says(flat, "FAILED  inclination at 104 mPa s, Ca 0.626: inside the donors' range")) << flat.output;
   const Result missing = run("validate tank-treading --dataset /nonexistent");
+  EXPECT_EQ(missing.code, 1) << missing.output;
+}
+
+/// The threshold campaign's dataset (data/resolved-shear layout): one run per Ca with the given modes.
+fs::path write_threshold_dataset(const std::string& name, const std::vector<std::string>& modes) {
+  const fs::path dir = fs::temp_directory_path() / ("hs_validate_threshold_" + name);
+  fs::create_directories(dir / "threshold-23.9");
+  std::ofstream out(dir / "threshold-23.9" / "dataset.csv");
+  out << "ca,flow_mode,membrane_tank_treads\n";
+  const double ca[] = {0.05, 0.1, 0.2, 0.4, 0.8};
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    out << ca[i] << ',' << modes[i] << ',' << (modes[i] == "tumbling" ? "false" : "true") << '\n';
+  }
+  return dir;
+}
+
+TEST(ValidateExitCodes, TumblingThresholdPassesOnlyOneTransitionAtTheMeasuredStress) {
+  const auto validate = [](const std::string& name, const std::vector<std::string>& modes) {
+    return run("validate tumbling-threshold --dataset " + write_threshold_dataset(name, modes).string());
+  };
+  // Measured: 0.063-0.23 Pa = Ca 0.099-0.36 (+-10 %). A transition between Ca 0.1 and 0.2 overlaps it.
+  const std::string tb = "tumbling", tt = "tank-treading", sw = "intermediate";
+  const Result good = validate("good", {tb, tb, sw, tt, tt});
+  EXPECT_EQ(good.code, 0) << good.output;
+  const Result late = validate("late", {tb, tb, tb, tb, tt});   // between 0.4 and 0.8: above the data
+  EXPECT_EQ(late.code, 1) << late.output;
+  EXPECT_TRUE(says(late, "FAILED  the transition Ca overlaps the measured thresholds")) << late.output;
+  const Result never = validate("never", {tt, tt, tt, tt, tt});
+  EXPECT_EQ(never.code, 1) << never.output;
+  EXPECT_TRUE(says(never, "no run tumbles")) << never.output;
+  const Result back = validate("back", {tb, tt, tb, tt, tt});
+  EXPECT_EQ(back.code, 1) << back.output;
+  EXPECT_TRUE(says(back, "FAILED  one transition")) << back.output;
+  const Result missing = run("validate tumbling-threshold --dataset /nonexistent");
   EXPECT_EQ(missing.code, 1) << missing.output;
 }
 
