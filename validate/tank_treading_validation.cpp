@@ -14,7 +14,7 @@
 // Every run must exist, tank-tread (or swing: the membrane revolves about a body that does not tumble), have settled (its last two whole revolutions within 2 %) and turn under the
 // Keller-Skalak bound of its measured axes. Reads the datasets only: nothing is simulated (the campaigns are resumable
 // and archived). Exit 1 on any failure, naming it. --dataset DIR reads DIR/<campaign>/dataset.csv instead of
-// data/resolved-shear/<campaign>/dataset.csv.
+// data/resolved-shear/<campaign>/dataset.csv. With --json FILE it also writes FILE.png (tools/plot_tank_treading.py).
 #include "validate/tank_treading_validation.hpp"
 
 #include <algorithm>
@@ -284,6 +284,21 @@ nlohmann::json check_inclination(const fs::path& reference, double eta_o_mPa_s, 
   return out;
 }
 
+/// FILE.png beside the JSON (tools/plot_tank_treading.py), when Debian's python3 with matplotlib is there.
+void plot(const fs::path& json, const fs::path& reference) {
+  const fs::path script = fs::path(HS_SOURCE_DIR) / "tools" / "plot_tank_treading.py";
+  if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) return;
+  fs::path png = json;
+  png.replace_extension(".png");
+  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}' '{}' > /dev/null 2>&1", script.string(),
+                                      json.string(), reference.string(), png.string());
+  if (std::system(cmd.c_str()) == 0) {
+    fmt::print("plot: {}\n", png.string());
+  } else {
+    fmt::print("plot_tank_treading.py failed (matplotlib missing?): no PNG written\n");
+  }
+}
+
 }  // namespace
 
 int validate_tank_treading(const hs::common::TaskOptions& options) {
@@ -334,6 +349,7 @@ int validate_tank_treading(const hs::common::TaskOptions& options) {
     result["provenance"] = hs::common::provenance();
     checks.write_to(result);
     hs::common::write_json(*options.json_file, result);
+    plot(*options.json_file, reference);
   }
   return checks.exit_code();
 }
