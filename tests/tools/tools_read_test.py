@@ -133,6 +133,17 @@ def main():
         band = os.path.join(ROOT, "data", "reference", "mills2004_rbc_stretch_experiment.csv")
         png(tmp, "stretching.png", [t("plot_stretching.py"), stretch, band, os.path.join(tmp, "stretching.png")],
             "plot_stretching on a .csv.gz (band: the committed .csv)")
+        result = os.path.join(tmp, "tank_treading.json")
+        with open(result, "w") as f:   # the shape of `validate tank-treading --json` (two settled runs a series)
+            json.dump({"frequency": [{"shear_rate_experiment_1_s": g, "f_over_shear_rate": v, "settled": True}
+                                     for g, v in ((8.2, 0.041), (16.9, 0.030))],
+                       "frequency_viscosity_ratio_1": [{"shear_rate_experiment_1_s": 8.2, "f_over_shear_rate": 0.05,
+                                                        "settled": True}],
+                       "inclination": [{"eta_o_mPa_s": e, "shear_rate_experiment_1_s": g, "inclination_deg": a,
+                                        "swinging_amplitude_deg": 3.0, "settled": True}
+                                       for e, g, a in ((10.7, 56.2, 9.0), (104.0, 3.85, 19.0))]}, f)
+        png(tmp, "tank_treading.png", [t("plot_tank_treading.py"), result, os.path.join(ROOT, "data", "reference"),
+                                       os.path.join(tmp, "tank_treading.png")], "plot_tank_treading on a validation JSON")
         fit = fit_folder(tmp)
         png(tmp, "fit.png", [t("plot_fit.py"), fit, "-o", os.path.join(tmp, "fit.png")], "plot_fit on gzipped predictions and Pareto front")
         shear, migration, stenosis = plate_and_stenosis_runs(tmp)
