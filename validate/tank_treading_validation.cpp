@@ -11,8 +11,9 @@
 //  - inclination (...-10.7 and ...-104): three measured shear rates in each medium against the donors' digitised
 //    angles. Band: the donors' range at that shear rate widened by the digitising error (+-0.3 deg); and the angle
 //    larger in the more viscous medium, as measured.
-// Every run must exist, tank-tread (or swing: the membrane revolves about a body that does not tumble), have settled (its last two whole revolutions within 2 %) and turn under the
-// Keller-Skalak bound of its measured axes. Reads the datasets only: nothing is simulated (the campaigns are resumable
+// Every run must exist, tank-tread (or swing: the membrane revolves about a body that does not tumble), have settled
+// (its last two whole revolutions as long as the two before within 2 %) and turn under the Keller-Skalak bound of its
+// measured axes. Reads the datasets only: nothing is simulated (the campaigns are resumable
 // and archived). Exit 1 on any failure, naming it. --dataset DIR reads DIR/<campaign>/dataset.csv instead of
 // data/resolved-shear/<campaign>/dataset.csv. With --json FILE it also writes FILE.png (tools/plot_tank_treading.py).
 #include "validate/tank_treading_validation.hpp"
@@ -105,7 +106,7 @@ bool check_run(const std::string& name, const Measured& m, hs::common::CheckList
   checks.expect(name + ": the membrane tank-treads (tank-treading or swinging), as in every measured cell", m.tank_treads,
                 fmt::format("measured {}{}", m.flow_mode, m.tank_treads ? fmt::format(", swinging +-{:.1f} deg", m.swinging_deg) : ""));
   if (!m.tank_treads) return false;
-  checks.expect(name + ": settled (last two whole revolutions within 2 %)", m.settled,
+  checks.expect(name + ": settled (last two whole revolutions as long as the two before, 2 %)", m.settled,
                 m.settled ? "yes" : "the revolutions still differ: a longer run (max_jeffery_periods) is needed");
   checks.expect(name + ": under the Keller-Skalak bound of the measured axes", m.rate_rad_s <= m.bound_rad_s,
                 fmt::format("{:.4g} rad/s, bound {:.4g} at DI {:.3f}", m.rate_rad_s, m.bound_rad_s, m.di));

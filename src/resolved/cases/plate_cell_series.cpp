@@ -19,7 +19,7 @@ constexpr std::size_t kPackedFields = 21;      // now: a header -kPackedFields (
 /// Share of the series treated as start-up before averages (mean inclination, DI, tank-treading rate) are taken.
 constexpr double kTransientFraction = 0.5;
 
-/// Two consecutive whole revolutions of the marker that take the same time within this share make a settled
+/// The last two whole revolutions of the marker taking the same time as the two before within this share make a settled
 /// tank-treading state: the 2 % of #26's criterion for what numerical knobs may change in the frequency.
 constexpr double kRevolutionTolerance = 0.02;
 
@@ -209,8 +209,8 @@ nlohmann::json PlateCellSeries::shear_results() const {
 
 void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const double> t, std::span<const double> phase,
                                             std::size_t from, nlohmann::json& r) const {
-  // The last two whole revolutions of the marker after the transient: settled when they take the same time, and the
-  // window of the means a validation compares (whole revolutions: whole swings of the inclination and the DI).
+  // The whole revolutions of the marker after the transient: settled when the last two take as long as the two before,
+  // and the window of the means a validation compares (whole revolutions: whole swings of the inclination and the DI).
   const WholeRevolutions rev = whole_revolutions(t, phase, from);
   // Tank-treading or swinging (the classifier's "intermediate" when the inclination swings by more than its limit):
   // the membrane revolves about a body that does not tumble. Both are the tank-treading cells of the experiments.

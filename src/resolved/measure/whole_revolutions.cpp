@@ -8,12 +8,14 @@ namespace hs::resolved {
 
 double WholeRevolutions::rate_rad_s() const {
   if (periods_s.empty() || window_end_s <= window_start_s) return 0.0;
-  const double turns = periods_s.size() >= 2 ? 2.0 : 1.0;
-  return 2.0 * std::numbers::pi * turns / (window_end_s - window_start_s);
+  return 2.0 * std::numbers::pi * static_cast<double>(periods_s.size()) / (window_end_s - window_start_s);
 }
 
 bool WholeRevolutions::settled(double tolerance) const {
-  return periods_s.size() >= 2 && std::abs(periods_s[1] - periods_s[0]) <= tolerance * periods_s[0];
+  if (periods_s.size() < 4) return false;
+  const double last = periods_s[0] + periods_s[1];
+  const double before = periods_s[2] + periods_s[3];
+  return std::abs(last - before) <= tolerance * last;
 }
 
 WholeRevolutions whole_revolutions(std::span<const double> time_s, std::span<const double> phase_rad, std::size_t from) {
@@ -40,7 +42,7 @@ WholeRevolutions whole_revolutions(std::span<const double> time_s, std::span<con
   }
   if (r.periods_s.empty()) return r;
   r.window_end_s = ends.front();
-  r.window_start_s = ends[std::min<std::size_t>(2, ends.size() - 1)];
+  r.window_start_s = ends.back();
   return r;
 }
 

@@ -11,12 +11,14 @@ namespace hs::resolved {
 
 struct WholeRevolutions {
   std::vector<double> periods_s;   // the marker's whole revolutions, the last one first
-  double window_start_s = 0.0;     // start of the last two revolutions (of the last one with only one)
+  double window_start_s = 0.0;     // start of the earliest whole revolution counted
   double window_end_s = 0.0;
 
-  /// Rate of the last two revolutions (or the only one), rad/s; 0 without a whole revolution.
+  /// Mean rate over all the whole revolutions, rad/s; 0 without one.
   [[nodiscard]] double rate_rad_s() const;
-  /// Whether the last two revolutions took the same time within `tolerance` (relative to the last one).
+  /// Whether the revolutions show no trend: at least four, and the last two together took the same time as the two
+  /// before them within `tolerance` (relative). Pairs, not single revolutions: a single revolution's period jitters by a
+  /// few per cent without a trend (the marker is one vertex of a discrete membrane crossing a lattice).
   [[nodiscard]] bool settled(double tolerance) const;
 };
 
