@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 // `hemoscale validate tumbling-threshold`: the dataset of cases/campaign/shear-threshold-23.9 (one healthy cell released
-// edge-on at capillary numbers a factor 2 apart, as the Stokes-flow analogue of Fischer & Korzeniewski's 23.9 mPa s
-// medium: cases/resolved/shear/fischer-korzeniewski) against the shear stresses at which their tumbling cells started
-// to tank-tread (Fischer & Korzeniewski 2013, JFM 736:351; three digitised points, 0.063-0.23 Pa). The model's
-// transition lies between its highest tumbling Ca and its lowest tank-treading (or swinging) Ca; it must be one step
-// (no tank-treading run below a tumbling one), inside the swept range, and overlap the measured thresholds widened by
-// their digitising error (+-10 %: points read off a logarithmic stress axis). Reads the dataset only: nothing is
-// simulated. Exit 1 on any failure, naming it. --dataset DIR reads DIR/threshold-23.9/dataset.csv.
+// edge-on at capillary numbers a factor 2 apart, and 0.3 inside the first bracket, as the Stokes-flow analogue of
+// Fischer & Korzeniewski's 23.9 mPa s medium: cases/resolved/shear/fischer-korzeniewski) against the shear stresses at
+// which their tumbling cells started to tank-tread (Fischer & Korzeniewski 2013, JFM 736:351; three digitised points,
+// 0.063-0.23 Pa). The model's transition lies between its highest tumbling Ca and its lowest tank-treading (or
+// swinging) Ca; it must be one step (no tumbling run above a tank-treading one), inside the swept range, and overlap
+// the measured thresholds widened by their digitising error (+-10 %: points read off a logarithmic stress axis). Reads
+// the dataset only: nothing is simulated. Exit 1 on any failure, naming it. --dataset DIR reads
+// DIR/threshold-23.9/dataset.csv.
 #include "validate/tumbling_threshold_validation.hpp"
 
 #include <algorithm>
