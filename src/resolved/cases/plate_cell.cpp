@@ -113,6 +113,9 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
   return s;
 }
 
+/// How often (in samples) a run with [run] stop_when_settled tests whether it may stop.
+constexpr std::size_t kSettledCheckEvery = 50;
+
 int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   const char* type = flow == PlateFlow::shear ? "shear" : "migration";
   const PlateCellConfig c = read_plate_cell(*request.config, flow, request.quick);
@@ -156,9 +159,16 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                                     series.add(sample_state(r, r.units.to_si_time(static_cast<double>(loop.step()))));
                                     out.row(series.row(series.samples().size() - 1));
                                   },
-                              .done = {},
+                              .done =
+                                  [&] {
+                                    // Settled tank-treading, checked every kSettledCheckEvery samples (the test reads
+                                    // the whole series).
+                                    const std::size_t n = series.samples().size();
+                                    return c.stop_when_settled && n % kSettledCheckEvery == 0 &&
+                                           series.tank_treading_settled();
+                                  },
                               .pack = [&] { return series.pack(); }};
-  run_sampled(loop, r, ctx, c.sample_every_steps, c.checkpoint_every_wall_s, progress, hooks, frame);
+  const bool stopped_early = run_sampled(loop, r, ctx, c.sample_every_steps, c.checkpoint_every_wall_s, progress, hooks, frame);
   out.write_frame(r, ctx, frame);
   const double simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
   ctx.log().info("stopped after {} steps ({:.4g} s simulated); wall time per stage:\n{}", loop.step(), simulated_s,
@@ -179,6 +189,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                          {"membrane_mass_factor", c.numerics.membrane_mass_factor},
                          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
                          {"steps", loop.step()},
+                         {"stopped_when_settled", stopped_early},
                          {"simulated_time_s", simulated_s},
                          {"wall_s_per_simulated_ms", ctx.wall_seconds() / (1e3 * simulated_s)},
                          {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps},

@@ -48,6 +48,9 @@ void read_run(hs::common::ConfigSection r, hs::common::ConfigSection o, PlateCel
   c.max_time_s = c.flow == PlateFlow::shear && r.has("max_jeffery_periods")
                      ? r.positive("max_jeffery_periods") * jeffery_period(c.shear_rate_1_s)
                      : r.positive("max_time_s");
+  // Shear: stop as soon as the membrane's whole revolutions are settled (PlateCellSeries::tank_treading_settled), the
+  // cap above still bounding a run that never settles (a tumbling cell).
+  c.stop_when_settled = c.flow == PlateFlow::shear ? r.boolean_or("stop_when_settled", false) : false;
   c.sample_every_s = r.positive("sample_every_s");
   c.checkpoint_every_wall_s = r.positive_or("checkpoint_every_wall_s", 600.0);
   c.vtk_every_s = o.non_negative_or("vtk_every_s", 0.0);

@@ -29,6 +29,7 @@ struct PlateCellConfig : PlateBox {
   CellNumerics numerics;            // [numerics]
   // [run]
   double max_time_s = 0.0;
+  bool stop_when_settled = false;   // shear: stop once the tank-treading revolutions are settled (max_time_s caps it)
   double sample_every_s = 0.0;
   double checkpoint_every_wall_s = 0.0;
   // [output]

@@ -23,6 +23,10 @@ constexpr double kTransientFraction = 0.5;
 /// tank-treading state: the 2 % of #26's criterion for what numerical knobs may change in the frequency.
 constexpr double kRevolutionTolerance = 0.02;
 
+/// A run that stops when settled runs at least this long: the flow mode needs two Jeffery periods after the transient
+/// half to tell tumbling from tank-treading (plate_cell_checks).
+constexpr double kMinJefferyPeriodsToStop = 4.0;
+
 std::size_t first_settled(std::size_t n) { return static_cast<std::size_t>(std::floor(kTransientFraction * static_cast<double>(n))); }
 
 }  // namespace
@@ -142,6 +146,22 @@ nlohmann::json PlateCellSeries::groups() const {
   g["confinement"] = 2.0 * kCellRadius_m / config_.gap_m;
   g["u_max_m_s"] = config_.u_max_m_s;
   return g;
+}
+
+bool PlateCellSeries::tank_treading_settled() const {
+  const std::size_t n = samples_.size();
+  if (n < 4 || samples_.back().time_s < kMinJefferyPeriodsToStop * jeffery_period(config_.shear_rate_1_s)) return false;
+  const std::size_t from = first_settled(n);
+  std::vector<double> t, incl, phase;
+  for (const auto& s : samples_) {
+    t.push_back(s.time_s);
+    incl.push_back(s.inclination_rad);
+    phase.push_back(s.marker_phase_rad);
+  }
+  const FlowMode mode = classify_flow_mode(std::span(incl).subspan(from), std::span(phase).subspan(from));
+  if (mode == FlowMode::tumbling || mode == FlowMode::steady) return false;
+  unwrap(phase, 2.0 * std::numbers::pi);
+  return whole_revolutions(t, phase, from).settled(kRevolutionTolerance);
 }
 
 nlohmann::json PlateCellSeries::results() const {

@@ -41,6 +41,9 @@ class PlateCellSeries {
   [[nodiscard]] nlohmann::json results() const;
   /// summary.json "membrane_energy": the power balance over the whole run and over the settled second half.
   [[nodiscard]] nlohmann::json energy_results() const;
+  /// Shear: whether the membrane tank-treads (or swings) over the second half and its whole revolutions there are
+  /// settled (the last two as long as the two before); after at least kMinJefferyPeriodsToStop Jeffery periods.
+  [[nodiscard]] bool tank_treading_settled() const;
   [[nodiscard]] std::vector<double> pack() const;
   void unpack(std::span<const double> flat);
 

@@ -233,6 +233,7 @@ TEST(ShearResults, ASwingingCellTankTreadsAndSettlesOverWholeRevolutions) {
   EXPECT_NEAR(r["mean_inclination_settled_deg"].get<double>(), 0.1 * 180.0 / std::numbers::pi, 0.01);
   EXPECT_NEAR(r["swinging_amplitude_deg"].get<double>(), 0.25 * 180.0 / std::numbers::pi, 0.01);
   EXPECT_NEAR(r["di_settled"].get<double>(), 0.4, 1e-3);
+  EXPECT_TRUE(series.tank_treading_settled());   // what stops a run with [run] stop_when_settled
   const double bound = keller_skalak_bound(c.shear_rate_1_s, 0.4);   // from the window's DI, 0.4 within 1e-4
   EXPECT_NEAR(r["keller_skalak_bound_rad_s"].get<double>(), bound, 2e-4 * bound);
 }
@@ -254,6 +255,12 @@ TEST(ShearResults, ATumblingCellDoesNotTankTread) {
   EXPECT_FALSE(r["membrane_tank_treads"]);
   EXPECT_FALSE(r["tank_treading_settled"]);
   EXPECT_EQ(r["tank_treading_frequency_settled_hz"].get<double>(), 0.0);
+  EXPECT_FALSE(series.tank_treading_settled());
+}
+
+TEST(PlateCellConfig, StopWhenSettledIsReadForShearOnly) {
+  EXPECT_TRUE(read(shipped("shear/fischer-korzeniewski"), PlateFlow::shear).stop_when_settled);
+  EXPECT_FALSE(read(shipped("shear/membrane-viscosity"), PlateFlow::shear).stop_when_settled);   // absent: off
 }
 
 /// The shipped migration case's checks on a synthetic centroid track y(t) / H (samples every 1 ms from the release,
