@@ -104,7 +104,8 @@ bool check_run(const std::string& name, const Measured& m, hs::common::CheckList
     return false;
   }
   checks.expect(name + ": the membrane tank-treads (tank-treading or swinging), as in every measured cell", m.tank_treads,
-                fmt::format("measured {}{}", m.flow_mode, m.tank_treads ? fmt::format(", swinging +-{:.1f} deg", m.swinging_deg) : ""));
+                fmt::format("measured {}{}", m.flow_mode,
+                            m.tank_treads ? fmt::format(", swinging +-{:.1f} deg", m.swinging_deg) : ""));
   if (!m.tank_treads) return false;
   checks.expect(name + ": settled (last two whole revolutions as long as the two before, 2 %)", m.settled,
                 m.settled ? "yes" : "the revolutions still differ: a longer run (max_jeffery_periods) is needed");
@@ -121,8 +122,8 @@ struct FrequencyBin {
   double sd = 0.0;
 };
 
-nlohmann::json check_frequency(const fs::path& reference, const fs::path& csv, double tighten,
-                               hs::common::CheckList& checks) {
+/// The shear-rate bins of the frequency data (fischer_korzeniewski2015_ttf_binned.csv).
+std::vector<FrequencyBin> read_frequency_bins(const fs::path& reference) {
   std::vector<FrequencyBin> bins;
   for (const TextRow& row : read_text_table(reference)) {
     bins.push_back({.eta_o_Pa_s = 1e-3 * number(row, "eta_o_mPa_s", reference),
@@ -131,6 +132,12 @@ nlohmann::json check_frequency(const fs::path& reference, const fs::path& csv, d
                     .mean = number(row, "f_over_shear_rate_mean", reference),
                     .sd = number(row, "f_over_shear_rate_sd", reference)});
   }
+  return bins;
+}
+
+nlohmann::json check_frequency(const fs::path& reference, const fs::path& csv, double tighten,
+                               hs::common::CheckList& checks) {
+  const std::vector<FrequencyBin> bins = read_frequency_bins(reference);
   nlohmann::json out = nlohmann::json::array();
   const std::vector<TextRow> rows = fs::exists(csv) ? read_text_table(csv) : std::vector<TextRow>{};
   fmt::print("frequency, {:g} mPa s medium ({})\n", 1e3 * bins.front().eta_o_Pa_s, fs::exists(csv) ? csv.string() : "no dataset");
@@ -187,9 +194,9 @@ nlohmann::json report_ratio_1(const fs::path& reference, const fs::path& csv) {
   fmt::print("sensitivity, viscosity ratio 1 (not a validation; {})\n", csv.string());
   fmt::print("  {:>8} {:>7} {:>14} {:>8} {:>9} {:>8} {:>6} {:>6}\n", "gamma/s", "Ca", "mode", "settled", "f/gamma",
              "incl deg", "swing", "DI");
-  for (const TextRow& row : read_text_table(reference)) {
-    const double rate = number(row, "shear_rate_mean_per_s", reference);
-    const double ca = model_ca(1e-3 * number(row, "eta_o_mPa_s", reference), rate);
+  for (const FrequencyBin& b : read_frequency_bins(reference)) {
+    const double rate = b.shear_rate_1_s;
+    const double ca = model_ca(b.eta_o_Pa_s, rate);
     const Measured m = find_run(rows, ca, csv);
     if (!m.present) continue;
     fmt::print("  {:>8g} {:>7.3f} {:>14} {:>8} {:>9.4f} {:>8.2f} {:>6.1f} {:>6.3f}\n", rate, ca, m.flow_mode,

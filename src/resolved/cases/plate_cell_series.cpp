@@ -29,6 +29,13 @@ constexpr double kMinJefferyPeriodsToStop = 4.0;
 
 std::size_t first_settled(std::size_t n) { return static_cast<std::size_t>(std::floor(kTransientFraction * static_cast<double>(n))); }
 
+/// Tank-treading or swinging (the classifier's "intermediate" when the inclination swings by more than its limit): the
+/// membrane revolves about a body that does not tumble. Both are the tank-treading cells of the experiments. The one
+/// definition behind the results' `membrane_tank_treads` and the stopping test.
+bool membrane_tank_treads(FlowMode mode, const WholeRevolutions& revolutions) {
+  return mode != FlowMode::tumbling && mode != FlowMode::steady && !revolutions.periods_s.empty();
+}
+
 }  // namespace
 
 TumblingPeriod tumbling_period(std::span<const double> time_s, std::span<const double> inclination_rad) {
@@ -159,9 +166,9 @@ bool PlateCellSeries::tank_treading_settled() const {
     phase.push_back(s.marker_phase_rad);
   }
   const FlowMode mode = classify_flow_mode(std::span(incl).subspan(from), std::span(phase).subspan(from));
-  if (mode == FlowMode::tumbling || mode == FlowMode::steady) return false;
   unwrap(phase, 2.0 * std::numbers::pi);
-  return whole_revolutions(t, phase, from).settled(kRevolutionTolerance);
+  const WholeRevolutions rev = whole_revolutions(t, phase, from);
+  return membrane_tank_treads(mode, rev) && rev.settled(kRevolutionTolerance);
 }
 
 nlohmann::json PlateCellSeries::results() const {
@@ -232,9 +239,7 @@ void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const doubl
   // The whole revolutions of the marker after the transient: settled when the last two take as long as the two before,
   // and the window of the means a validation compares (whole revolutions: whole swings of the inclination and the DI).
   const WholeRevolutions rev = whole_revolutions(t, phase, from);
-  // Tank-treading or swinging (the classifier's "intermediate" when the inclination swings by more than its limit):
-  // the membrane revolves about a body that does not tumble. Both are the tank-treading cells of the experiments.
-  const bool tank_treading = mode != FlowMode::tumbling && mode != FlowMode::steady && !rev.periods_s.empty();
+  const bool tank_treading = membrane_tank_treads(mode, rev);
   r["membrane_tank_treads"] = tank_treading;
   r["revolution_periods_s"] = rev.periods_s;
   r["tank_treading_settled"] = tank_treading && rev.settled(kRevolutionTolerance);
