@@ -4,7 +4,8 @@
 // Fischer & Korzeniewski's 23.9 mPa s medium: cases/resolved/shear/fischer-korzeniewski) against the shear stresses at
 // which their tumbling cells started to tank-tread (Fischer & Korzeniewski 2013, JFM 736:351; three digitised points,
 // 0.063-0.23 Pa). The model's transition lies between its highest tumbling Ca and its lowest tank-treading (or
-// swinging) Ca; it must be one step (no tumbling run above a tank-treading one), inside the swept range, and overlap
+// swinging) Ca; every run must be long enough to read its mode (4 Jeffery periods), the transition one step (no
+// tumbling run above a tank-treading one), inside the swept range, and overlap
 // the measured thresholds widened by their digitising error (+-10 %: points read off a logarithmic stress axis). Reads
 // the dataset only: nothing is simulated. Exit 1 on any failure, naming it. --dataset DIR reads
 // DIR/threshold-23.9/dataset.csv.
@@ -22,6 +23,7 @@
 #include "common/check_list.hpp"
 #include "common/run_folder.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
+#include "resolved/measure/flow_mode.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
 #include "validate/text_table.hpp"
 
@@ -37,8 +39,12 @@ using hs::validate::text;
 constexpr double kMedium_mPa_s = 23.9;
 constexpr double kDigitising = 0.10;
 
+/// A run's mode is read over its second half, which must span two Jeffery periods (plate_cell_checks): four in all.
+constexpr double kJefferyPeriodsForMode = 4.0;
+
 struct Run {
   double ca = 0.0;
+  double jeffery_periods = 0.0;   // simulated time / Jeffery's period at the run's shear rate
   std::string flow_mode;
   bool tank_treads = false;   // tank-treading or swinging
   bool tumbles = false;
@@ -82,6 +88,7 @@ int validate_tumbling_threshold(const hs::common::TaskOptions& options) {
     r.flow_mode = text(row, "flow_mode");
     r.tank_treads = text(row, "membrane_tank_treads") == "true";
     r.tumbles = r.flow_mode == "tumbling";
+    r.jeffery_periods = number(row, "simulated_time_s", csv) / jeffery_period(number(row, "shear_rate_1_s", csv));
     runs.push_back(r);
   }
   std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.ca < b.ca; });
@@ -100,6 +107,14 @@ int validate_tumbling_threshold(const hs::common::TaskOptions& options) {
                     {"membrane_tank_treads", r.tank_treads}});
   }
   result["runs"] = rows;
+  const auto shortest = std::min_element(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+    return a.jeffery_periods < b.jeffery_periods;
+  });
+  checks.expect(fmt::format("every run long enough to read its mode (>= {:g} Jeffery periods)", kJefferyPeriodsForMode),
+                shortest != runs.end() && shortest->jeffery_periods >= kJefferyPeriodsForMode,
+                shortest == runs.end() ? "no runs"
+                                       : fmt::format("shortest {:.2f} periods (Ca {:.3g})", shortest->jeffery_periods,
+                                                     shortest->ca));
   checks.expect("one transition: no tumbling run above a tank-treading one", one_step,
                 one_step ? "yes" : "tumbling above tank-treading: hysteresis or intermittency, no single threshold");
   const bool bracketed = highest_tumbling > 0.0 && lowest_tank_treading > 0.0;

@@ -129,14 +129,16 @@ TEST(ValidateExitCodes, TankTreadingPassesOnlyATankTreadingSettledCellInsideTheS
 }
 
 /// The threshold campaign's dataset (data/resolved-shear layout): one run per Ca with the given modes.
-fs::path write_threshold_dataset(const std::string& name, const std::vector<std::string>& modes) {
+fs::path write_threshold_dataset(const std::string& name, const std::vector<std::string>& modes, double periods = 6.0) {
   const fs::path dir = fs::temp_directory_path() / ("hs_validate_threshold_" + name);
   fs::create_directories(dir / "threshold-23.9");
   std::ofstream out(dir / "threshold-23.9" / "dataset.csv");
-  out << "ca,flow_mode,membrane_tank_treads\n";
+  out << "ca,flow_mode,membrane_tank_treads,shear_rate_1_s,simulated_time_s\n";
   const double ca[] = {0.05, 0.1, 0.2, 0.4, 0.8};
   for (std::size_t i = 0; i < modes.size(); ++i) {
-    out << ca[i] << ',' << modes[i] << ',' << (modes[i] == "tumbling" ? "false" : "true") << '\n';
+    const double gamma = 624.0 * ca[i];   // `periods` Jeffery periods (19.3 / gamma_dot each); the campaign runs 6
+    out << ca[i] << ',' << modes[i] << ',' << (modes[i] == "tumbling" ? "false" : "true") << ',' << gamma << ','
+        << periods * 19.3 / gamma << '\n';
   }
   return dir;
 }
@@ -158,6 +160,10 @@ TEST(ValidateExitCodes, TumblingThresholdPassesOnlyOneTransitionAtTheMeasuredStr
   const Result back = validate("back", {tb, tt, tb, tt, tt});
   EXPECT_EQ(back.code, 1) << back.output;
   EXPECT_TRUE(says(back, "FAILED  one transition")) << back.output;
+  const Result short_runs = run("validate tumbling-threshold --dataset " +
+                                write_threshold_dataset("short", {tb, tb, sw, tt, tt}, 3.0).string());
+  EXPECT_EQ(short_runs.code, 1) << short_runs.output;   // the mode of a 3-period run is not yet readable
+  EXPECT_TRUE(says(short_runs, "FAILED  every run long enough to read its mode")) << short_runs.output;
   const Result missing = run("validate tumbling-threshold --dataset /nonexistent");
   EXPECT_EQ(missing.code, 1) << missing.output;
 }
