@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -58,11 +59,18 @@ double cot(const Vec& u, const Vec& v) { return u.dot(v) / u.cross(v).norm(); }
 
 MembraneEnergy::MembraneEnergy(const Positions& rest_um, std::vector<std::array<int, 3>> triangles,
                                const EnergyModuli& moduli)
+    : MembraneEnergy(rest_um, rest_um, std::move(triangles), moduli) {}
+
+MembraneEnergy::MembraneEnergy(const Positions& rest_um, const Positions& stress_free_um,
+                               std::vector<std::array<int, 3>> triangles, const EnergyModuli& moduli)
     : triangles_(std::move(triangles)), moduli_(moduli), vertex_count_(static_cast<int>(rest_um.rows())) {
+  if (stress_free_um.rows() != rest_um.rows()) {
+    throw std::invalid_argument("MembraneEnergy: the stress-free shape has another vertex count than the rest shape");
+  }
   rest_.reserve(triangles_.size());
   for (const auto& t : triangles_) {
-    const Vec e1 = row(rest_um, t[1]) - row(rest_um, t[0]);
-    const Vec e2 = row(rest_um, t[2]) - row(rest_um, t[0]);
+    const Vec e1 = row(stress_free_um, t[1]) - row(stress_free_um, t[0]);
+    const Vec e2 = row(stress_free_um, t[2]) - row(stress_free_um, t[0]);
     const Vec u = e1.normalized();
     const Vec w = (e2 - e2.dot(u) * u).normalized();
     Eigen::Matrix2d r0;

@@ -35,6 +35,10 @@ struct EnergyModuli {
 class MembraneEnergy {
  public:
   MembraneEnergy(const Positions& rest_um, std::vector<std::array<int, 3>> triangles, const EnergyModuli& moduli);
+  /// The same with the triangles' in-plane reference (the spectrin network's stress-free shape, vertex by vertex)
+  /// apart from the rest shape, which keeps the bending (spontaneous curvature) and the volume and area targets.
+  MembraneEnergy(const Positions& rest_um, const Positions& stress_free_um, std::vector<std::array<int, 3>> triangles,
+                 const EnergyModuli& moduli);
 
   /// Returns E(x) in pN um and writes dE/dx (pN) into `gradient` (resized to x's shape).
   double evaluate(const Positions& x, Positions& gradient);

@@ -70,6 +70,19 @@ MembraneConfig parse_membrane_config(hs::common::ConfigSection& section) {
     c.mesh.diameter_m = section.positive_or("diameter_m", c.mesh.diameter_m);
     c.mesh.relax_iterations = static_cast<int>(section.integer_in_or("relax_iterations", 0, 10000, c.mesh.relax_iterations));
   }
+  // The spectrin network's stress-free shape: the biconcave rest shape (full shape memory, the default) or an oblate
+  // spheroid of a given reduced volume (above the biconcave's 0.64; 1 = the sphere), for the generated mesh only.
+  const bool oblate = section.one_of_or("stress_free_shape", {"biconcave", "oblate_spheroid"}, "biconcave") == "oblate_spheroid";
+  if (oblate && c.mesh_file) {
+    section.fail("stress_free_shape", "\"oblate_spheroid\" applies to the generated mesh (remove mesh_file or this key)");
+  }
+  if (!oblate && section.has("stress_free_reduced_volume")) {
+    section.fail("stress_free_reduced_volume", "applies to stress_free_shape = \"oblate_spheroid\"");
+  }
+  if (oblate) {
+    c.mesh.stress_free_reduced_volume =
+        section.number_in_or("stress_free_reduced_volume", 0.65, 1.0, kStressFreeReducedVolume);
+  }
   c.material = parse_material(section);
   c.solver = parse_solver(section);
   return c;

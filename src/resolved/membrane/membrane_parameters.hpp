@@ -16,6 +16,12 @@ namespace hs::resolved {
 /// Hochmuth 1976, Biophys J 16:1); shared/reference/validation/wave2/membrane_and_cytoplasm_viscosity.csv.
 inline constexpr double kMembraneViscosityHochmuth1979_N_s_m = 7.0e-7;
 
+/// Reduced volume of the oblate stress-free shape when one is asked for (stress_free_shape = "oblate_spheroid"): 0.95,
+/// the default of Amoudruz et al.'s RBC model library (cselab/tRBC-UQ, packages/dpdprops/rbcmesh.py
+/// DEFAULT_STRESS_FREE_REDUCED_VOLUME; they ship 0.93-0.97 and infer it from equilibrium-shape, stretching and
+/// relaxation data, Biophys J 2023), a "nearly spherical" network as Peng, Mashayekh & Zhu 2014 (JFM 742:96) argue for.
+inline constexpr double kStressFreeReducedVolume = 0.95;
+
 /// Material of the RBC membrane, SI. Every default names its source.
 struct MembraneParameters {
   /// In-plane shear modulus G_s: 2.5 uN/m, the low end of the literature range 2.5-12 uN/m (Evans 1973; Hochmuth &

@@ -59,7 +59,11 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   if (!(time_step_s > 0.0)) throw hs::common::ConfigError(fmt::format("npFEM time_step_s = {} must be > 0", time_step_s));
   x_um_ = to_positions(rest_mesh.vertices_m, um_per_m);
   const Eigen::RowVector3d c = x_um_.colwise().mean();
-  energy_ = std::make_unique<MembraneEnergy>(Positions(x_um_.rowwise() - c), rest_mesh.triangles, internal_moduli(material));
+  const Positions rest_um = x_um_.rowwise() - c;
+  energy_ = rest_mesh.stress_free_vertices_m.empty()
+                ? std::make_unique<MembraneEnergy>(rest_um, rest_mesh.triangles, internal_moduli(material))
+                : std::make_unique<MembraneEnergy>(rest_um, to_positions(rest_mesh.stress_free_vertices_m, um_per_m),
+                                                   rest_mesh.triangles, internal_moduli(material));
   const int n = vertex_count();
   v_um_us_.setZero(n, 3);
   f_ext_pN_.setZero(n, 3);
@@ -96,7 +100,7 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
   work_->damped_mass = BlockedLdlt(damped_mass_solver_);
   // Rank-2 Woodbury correction for the global volume and area energies, from their rest gradients.
   Positions gv, ga;
-  energy_->volume_area_gradients(Positions(x_um_.rowwise() - c), gv, ga);
+  energy_->volume_area_gradients(rest_um, gv, ga);
   const EnergyModuli& k = energy_->moduli();
   woodbury_coef_[0] = k.volume_modulus_pN_um2 / energy_->rest_volume();
   woodbury_coef_[1] = k.global_area_pN_um / energy_->rest_area();
@@ -111,7 +115,7 @@ NpfemSolver::NpfemSolver(const TriangleMesh& rest_mesh, const MembraneParameters
     viscosity_ = std::make_unique<MembraneViscosity>(rest_mesh.triangles, material.viscosity_N_s_m * pN_us_per_um_per_N_s_m);
     viscosity_->freeze(x_um_);
     step_proxy_ = std::make_unique<ViscousStepProxy>(h0, *viscosity_, h_us_);
-    step_proxy_->refresh(Positions(x_um_.rowwise() - c));
+    step_proxy_->refresh(rest_um);
     if (!step_proxy_->ok()) throw hs::common::NumericalError("npFEM: the viscous Hessian proxy is not positive definite");
   }
   update_woodbury();

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "common/errors.hpp"
+#include "resolved/membrane/stress_free_shape.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -131,6 +132,9 @@ TriangleMesh make_rbc_mesh(const RbcMeshOptions& options) {
     v = Vec3{r0 * v.x, r0 * v.y, v.z > 0.0 ? z : (v.z < 0.0 ? -z : 0.0)};
   }
   for (int it = 0; it < options.relax_iterations; ++it) relax_sweep(m, shape);
+  if (options.stress_free_reduced_volume) {
+    m.stress_free_vertices_m = oblate_stress_free_vertices(m, shape, *options.stress_free_reduced_volume);
+  }
   return m;
 }
 

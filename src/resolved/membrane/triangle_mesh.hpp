@@ -13,6 +13,9 @@ namespace hs::resolved {
 struct TriangleMesh {
   std::vector<hs::common::Vec3> vertices_m;
   std::vector<std::array<int, 3>> triangles;
+  /// The membrane's in-plane stress-free shape, vertex by vertex (empty: the vertices themselves). Only lengths and
+  /// angles within each triangle are read from it, so it need not follow the mesh when the mesh is moved or rotated.
+  std::vector<hs::common::Vec3> stress_free_vertices_m = {};
 
   [[nodiscard]] int vertex_count() const { return static_cast<int>(vertices_m.size()); }
   [[nodiscard]] int triangle_count() const { return static_cast<int>(triangles.size()); }

@@ -109,3 +109,30 @@ TEST(MembraneDissipation, FrictionByDefaultViscosityWhenAskedFor) {
   EXPECT_NE(config_error("[membrane]\nviscosity_N_s_m = -1e-7\n").find("viscosity_N_s_m"), std::string::npos);
   EXPECT_NE(config_error("[membrane]\ndissipation = \"viscous\"\n").find("dissipation"), std::string::npos);
 }
+
+TEST(MembraneStressFreeShape, BiconcaveByDefaultOblateWhenAskedFor) {
+  const auto parse = [](const std::string& toml) {
+    auto f = hs::common::ConfigFile::parse(toml, "case.toml");
+    auto s = f->root().section("membrane");
+    MembraneConfig c = parse_membrane_config(s);
+    f->finish();
+    return c;
+  };
+  EXPECT_FALSE(parse("[membrane]\n").mesh.stress_free_reduced_volume.has_value());   // full shape memory
+  EXPECT_EQ(parse("[membrane]\nstress_free_shape = \"oblate_spheroid\"\n").mesh.stress_free_reduced_volume,
+            kStressFreeReducedVolume);
+  const MembraneConfig given =
+      parse("[membrane]\nstress_free_shape = \"oblate_spheroid\"\nstress_free_reduced_volume = 0.97\n");
+  EXPECT_EQ(given.mesh.stress_free_reduced_volume, 0.97);
+  EXPECT_FALSE(build_membrane_mesh(given).stress_free_vertices_m.empty());
+  // The reduced volume without the shape, out of range (at or below the biconcave's 0.64), or with a mesh file.
+  EXPECT_NE(config_error("[membrane]\nstress_free_reduced_volume = 0.95\n").find("stress_free_reduced_volume"),
+            std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nstress_free_shape = \"oblate_spheroid\"\nstress_free_reduced_volume = 0.6\n")
+                .find("stress_free_reduced_volume"),
+            std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nstress_free_shape = \"sphere\"\n").find("stress_free_shape"), std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nmesh_file = \"cell.obj\"\nstress_free_shape = \"oblate_spheroid\"\n")
+                .find("stress_free_shape"),
+            std::string::npos);
+}
