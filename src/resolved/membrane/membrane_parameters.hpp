@@ -17,9 +17,10 @@ namespace hs::resolved {
 inline constexpr double kMembraneViscosityHochmuth1979_N_s_m = 7.0e-7;
 
 /// Reduced volume of the oblate stress-free shape when one is asked for (stress_free_shape = "oblate_spheroid"): 0.95,
-/// the default of Amoudruz et al.'s RBC model library (cselab/tRBC-UQ, packages/dpdprops/rbcmesh.py
-/// DEFAULT_STRESS_FREE_REDUCED_VOLUME; they ship 0.93-0.97 and infer it from equilibrium-shape, stretching and
-/// relaxation data, Biophys J 2023), a "nearly spherical" network as Peng, Mashayekh & Zhu 2014 (JFM 742:96) argue for.
+/// the default of Amoudruz et al.'s RBC model library (cselab/tRBC-UQ, packages/dpdprops/dpdprops/rbcmesh.py
+/// DEFAULT_STRESS_FREE_REDUCED_VOLUME; they ship 0.93-0.97; arXiv 2303.03404 infers the stress-free shape from
+/// equilibrium-shape, stretching and relaxation data), a "nearly spherical" network as Peng, Mashayekh & Zhu 2014
+/// (JFM 742:96) argue for. The default shape stays the biconcave one (measured: docs/resolved-coupling.md).
 inline constexpr double kStressFreeReducedVolume = 0.95;
 
 /// Material of the RBC membrane, SI. Every default names its source.
