@@ -33,6 +33,14 @@ std::array<int, 3> plate_nodes(const PlateCellConfig& c) {
           static_cast<int>(std::lround(c.width_m / dx))};
 }
 
+/// The cell's mass as the membrane carries it (its density times the mass factor, times the rest volume) over the
+/// Stokes drag time scale of a sphere of radius a: m gamma_dot / (6 pi mu a).
+double cell_stokes_number(const PlateCellConfig& c, const NpfemSolver& membrane) {
+  const double mass_kg = membrane.vertex_mass_kg() * membrane.vertex_count();
+  const double mu = c.density_kg_m3 * c.kinematic_viscosity_m2_s;
+  return mass_kg * c.shear_rate_1_s / (6.0 * std::numbers::pi * mu * kCellRadius_m);
+}
+
 /// Node j sits at y = (j + 1/2) dx: the half-way walls of the y faces are then at y = 0 and y = H = ny dx.
 std::unique_ptr<PlateCellRun> build(const PlateCellConfig& c) {
   const CellNumerics& n = c.numerics;
@@ -187,6 +195,9 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                          {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
                          {"lattice_weissenberg", c.numerics.lattice_weissenberg},   // gamma (tau - 1/2) dt
                          {"membrane_mass_factor", c.numerics.membrane_mass_factor},
+                         // The inertia the mass factor gives the cell: its mass x gamma_dot / (6 pi mu a), a Stokes
+                         // number (a real cell's is ~1e-4 of this); the shear results depend on it above ~0.1 (measured).
+                         {"cell_stokes_number", cell_stokes_number(c, *r.membrane)},
                          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
                          {"steps", loop.step()},
                          {"stopped_when_settled", stopped_early},

@@ -69,6 +69,12 @@ TEST(ShearCli, QuickRunGivesAFlowModeAndTheGroups) {
                           "particle_reynolds"}) {
     EXPECT_TRUE(r.contains(key)) << key;
   }
+  // The cell's Stokes number from the membrane's (scaled) mass: m gamma / (6 pi mu a), m = 1125 kg/m^3 x mass factor x
+  // the mesh's volume, which for 258 vertices is within 5 % of the exact Evans-Fung 94.1 um^3.
+  const auto& n = s["numerics"];
+  const double mass_kg = 1125.0 * n["membrane_mass_factor"].get<double>() * 94.1e-18;
+  EXPECT_NEAR(n["cell_stokes_number"].get<double>() / (mass_kg * 400.0 / (6.0 * std::numbers::pi * 1.025e-3 * 3.91e-6)),
+              1.0, 0.05);
   // The stiff disc starts parallel to the plates and must start turning with the flow (clockwise: angle < 0).
   const auto incl = hs::common::read_csv(out / "timeseries.csv").column("inclination_rad");
   EXPECT_LT(incl.back(), -0.05);
