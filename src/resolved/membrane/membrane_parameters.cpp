@@ -72,7 +72,8 @@ MembraneConfig parse_membrane_config(hs::common::ConfigSection& section) {
   }
   // The spectrin network's stress-free shape: the biconcave rest shape (full shape memory, the default) or an oblate
   // spheroid of a given reduced volume (above the biconcave's 0.64; 1 = the sphere), for the generated mesh only.
-  const bool oblate = section.one_of_or("stress_free_shape", {"biconcave", "oblate_spheroid"}, "biconcave") == "oblate_spheroid";
+  const bool oblate =
+      section.one_of_or("stress_free_shape", {"biconcave", "oblate_spheroid"}, "biconcave") == "oblate_spheroid";
   if (oblate && c.mesh_file) {
     section.fail("stress_free_shape", "\"oblate_spheroid\" applies to the generated mesh (remove mesh_file or this key)");
   }

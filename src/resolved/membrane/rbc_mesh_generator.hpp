@@ -23,7 +23,8 @@ struct RbcMeshOptions {
 
 /// Sphere points of the subdivided polyhedron, mapped with X = R0 x, Y = R0 y, Z = sign(z) z_EF(r)
 /// (reference §4.2), then optionally relaxed tangentially towards equal triangle areas and re-projected
-/// on the surface; with its oblate stress-free shape when the options ask for one. Triangles are oriented outward. Throws ConfigError for an unsupported vertex count.
+/// on the surface; with its oblate stress-free shape when the options ask for one. Triangles are oriented outward.
+/// Throws ConfigError for an unsupported vertex count.
 [[nodiscard]] TriangleMesh make_rbc_mesh(const RbcMeshOptions& options);
 
 /// The unit sphere mesh before mapping (used by the generator and by tests of the bending energy).

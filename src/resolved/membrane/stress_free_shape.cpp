@@ -6,10 +6,9 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <stdexcept>
 
 #include <fmt/format.h>
-
-#include "common/errors.hpp"
 
 namespace hs::resolved {
 namespace {
