@@ -147,11 +147,12 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
   // Measured (docs/resolved-coupling.md "The membrane's mass in the shear analogue"): at St 0.09 -> 0.18 -> 0.36 the
   // 10.7 mPa s cell's angle went 6.96 -> 6.22 -> 1.14 deg; 0.05 keeps a factor of two below the lowest tried.
-  if (const double st = cell_stokes_number(c, *r.membrane); st > kCellStokesNumberWarning) {
+  const double stokes_number = cell_stokes_number(c, *r.membrane);
+  if (stokes_number > kCellStokesNumberWarning) {
     ctx.log().warning("cell Stokes number {:.3g} (membrane mass factor {:.3g}) is above {}: the membrane's numerical mass "
                       "changes the motion (docs/resolved-coupling.md, \"The membrane's mass in the shear analogue\"); "
                       "raise every viscosity at the same Ca or lower the mass factor",
-                      st, c.numerics.membrane_mass_factor, kCellStokesNumberWarning);
+                      stokes_number, c.numerics.membrane_mass_factor, kCellStokesNumberWarning);
   }
   PlateCellSeries series(c);
   int frame = 0;
@@ -205,9 +206,8 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                          {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
                          {"lattice_weissenberg", c.numerics.lattice_weissenberg},   // gamma (tau - 1/2) dt
                          {"membrane_mass_factor", c.numerics.membrane_mass_factor},
-                         // The inertia the mass factor gives the cell: its mass x gamma_dot / (6 pi mu a), a Stokes
-                         // number (a real cell's is ~1e-4 of this); the shear results depend on it above ~0.1 (measured).
-                         {"cell_stokes_number", cell_stokes_number(c, *r.membrane)},
+                         // The inertia the mass factor gives the cell (m gamma_dot / (6 pi mu a); warned above 0.05)
+                         {"cell_stokes_number", stokes_number},
                          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
                          {"steps", loop.step()},
                          {"stopped_when_settled", stopped_early},

@@ -106,8 +106,8 @@ std::unique_ptr<SuspensionRun> build(const ShearSuspensionConfig& c, const Place
   MembraneParameters material = c.membrane.material;
   material.density_kg_m3 *= n.membrane_mass_factor;
   for (const auto& x : placement.cells_m) {
-    const TriangleMesh mesh{
-        .vertices_m = x, .triangles = rest.triangles, .stress_free_vertices_m = rest.stress_free_vertices_m};
+    TriangleMesh mesh = rest;   // topology and stress-free shape of the rest cell, placed
+    mesh.vertices_m = x;
     r->cells->add_cell(std::make_unique<NpfemSolver>(mesh, material, c.membrane.solver, n.membrane_every * n.dt_s));
   }
   return r;
