@@ -14,6 +14,7 @@
 #include "resolved/cases/plate_cell_checks.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
+#include "resolved/cases/stokes_analogue.hpp"
 #include "resolved/measure/stresslet.hpp"
 #include "resolved/measure/cell_shape.hpp"
 
@@ -32,8 +33,6 @@ std::array<int, 3> plate_nodes(const PlateCellConfig& c) {
   return {static_cast<int>(std::lround(c.length_m / dx)), static_cast<int>(std::lround(c.gap_m / dx)),
           static_cast<int>(std::lround(c.width_m / dx))};
 }
-
-constexpr double kCellStokesNumberWarning = 0.05;
 
 /// The cell's mass as the membrane carries it (its density times the mass factor, times the rest volume) over the
 /// Stokes drag time scale of a sphere of radius a: m gamma_dot / (6 pi mu a).
@@ -145,14 +144,15 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                  c.numerics.membrane_mass_factor, c.numerics.viscosity_ratio,
                  c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.tau : c.numerics.collision.tau);
   if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
-  // Measured (docs/resolved-coupling.md "The membrane's mass in the shear analogue"): at St 0.09 -> 0.18 -> 0.36 the
-  // 10.7 mPa s cell's angle went 6.96 -> 6.22 -> 1.14 deg; 0.05 keeps a factor of two below the lowest tried.
+  if (c.stokes_analogue) {
+    ctx.log().info("Stokes-flow analogue: every viscosity x {:g} (Ca, viscosity ratio and Bq kept)", c.analogue_viscosity_factor);
+  }
   const double stokes_number = cell_stokes_number(c, *r.membrane);
-  if (stokes_number > kCellStokesNumberWarning) {
+  if (stokes_number > kAnalogueMaxCellStokes * (1.0 + 1e-9)) {
     ctx.log().warning("cell Stokes number {:.3g} (membrane mass factor {:.3g}) is above {}: the membrane's numerical mass "
                       "changes the motion (docs/resolved-coupling.md, \"The membrane's mass in the shear analogue\"); "
-                      "raise every viscosity at the same Ca or lower the mass factor",
-                      stokes_number, c.numerics.membrane_mass_factor, kCellStokesNumberWarning);
+                      "give [flow] capillary with stokes_analogue = true, or lower the mass factor",
+                      stokes_number, c.numerics.membrane_mass_factor, kAnalogueMaxCellStokes);
   }
   PlateCellSeries series(c);
   int frame = 0;
@@ -208,6 +208,8 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                          {"membrane_mass_factor", c.numerics.membrane_mass_factor},
                          // The inertia the mass factor gives the cell (m gamma_dot / (6 pi mu a); warned above 0.05)
                          {"cell_stokes_number", stokes_number},
+                         // [flow] stokes_analogue: every viscosity's multiplier (1 without it)
+                         {"analogue_viscosity_factor", c.analogue_viscosity_factor},
                          {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step
                          {"steps", loop.step()},
                          {"stopped_when_settled", stopped_early},

@@ -9,7 +9,9 @@
 #include <fmt/format.h>
 
 #include "resolved/cases/cytoplasm_viscosity.hpp"
+#include "resolved/cases/stokes_analogue.hpp"
 #include "resolved/measure/flow_mode.hpp"
+#include "resolved/membrane/triangle_mesh.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -33,12 +35,41 @@ void read_flow(hs::common::ConfigSection f, PlateCellConfig& c) {
   f.forbid_together("shear_rate_1_s", "capillary", "give the shear rate or the capillary number Ca = mu gamma a / k_s");
   if (f.has("capillary")) {
     c.shear_rate_1_s = f.positive("capillary") * c.membrane.material.shear_modulus_N_m / (mu * kCellRadius_m);
+    c.stokes_analogue = f.boolean_or("stokes_analogue", false);
   } else {
+    if (f.has("stokes_analogue")) {
+      f.fail("stokes_analogue", "keeps Ca while it raises the viscosities: give [flow] capillary, not shear_rate_1_s");
+    }
     c.shear_rate_1_s = f.positive("shear_rate_1_s");
   }
+}
+
+/// Shear: the wall speed and Reynolds number of the (final) shear rate and viscosity.
+void derive_shear_flow(hs::common::ConfigSection f, PlateCellConfig& c) {
   c.u_max_m_s = 0.5 * c.shear_rate_1_s * c.gap_m;
   c.reynolds = c.shear_rate_1_s * c.gap_m * c.gap_m / c.kinematic_viscosity_m2_s;
   f.derived("shear_rate_1_s", c.shear_rate_1_s);
+  if (c.stokes_analogue) f.derived("analogue_viscosity_factor", c.analogue_viscosity_factor);
+}
+
+/// [flow] stokes_analogue: every viscosity (plasma, cytoplasm through the kept ratio, membrane) times the factor, the
+/// shear rate over it. The cell's mass (with the mass factor) needs that factor given, not derived from tau.
+void apply_stokes_analogue(hs::common::ConfigSection numerics, PlateCellConfig& c) {
+  if (c.numerics.membrane_mass_factor == 0.0) {
+    numerics.fail("membrane_mass_factor", "must be given with [flow] stokes_analogue = true (the analogue keeps the "
+                                          "cell's Stokes number, which the mass factor sets; the shear cases use 100)");
+  }
+  const double volume_m3 = mesh_volume_m3(build_membrane_mesh(c.membrane));
+  const double factor = stokes_analogue_viscosity_factor(
+      {.kinematic_viscosity_m2_s = c.kinematic_viscosity_m2_s, .density_kg_m3 = c.density_kg_m3,
+       .shear_rate_1_s = c.shear_rate_1_s,
+       .cell_mass_kg = c.membrane.material.density_kg_m3 * c.numerics.membrane_mass_factor * volume_m3,
+       .cell_radius_m = kCellRadius_m});
+  c.analogue_viscosity_factor = factor;
+  c.kinematic_viscosity_m2_s *= factor;
+  c.membrane.material.viscosity_N_s_m *= factor;
+  c.membrane.material.deformation_friction_Pa_s_m *= factor;
+  c.shear_rate_1_s /= factor;
 }
 
 void read_run(hs::common::ConfigSection r, hs::common::ConfigSection o, PlateCellConfig& c) {
@@ -91,6 +122,8 @@ PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bo
   auto numerics = root.section("numerics");
   c.numerics = read_cell_numerics(numerics);
   c.numerics.viscosity_ratio = viscosity_ratio;
+  if (c.stokes_analogue) apply_stokes_analogue(numerics, c);
+  if (flow == PlateFlow::shear) derive_shear_flow(root.section("flow"), c);
   read_run(root.section("run"), root.section_or_empty("output"), c);
   read_check(root.section_or_empty("check"), c);
   file.finish();

@@ -22,6 +22,11 @@ struct PlateCellConfig : PlateBox {
   double shear_rate_1_s = 0.0;      // shear: the imposed rate; migration: the wall shear rate 4 U_max / H
   double u_max_m_s = 0.0;           // migration: centreline velocity; shear: wall speed U/2
   double reynolds = 0.0;            // shear: rho gamma H^2 / mu (Couette, U = gamma H); migration: rho H U_max / mu
+  /// shear with capillary: every viscosity raised by powers of two until the cell's Re_p and Stokes number are
+  /// negligible (stokes_analogue.hpp), Ca, the viscosity ratio and Bq = eta_m / (mu a) kept. The viscosities above and
+  /// the shear rate are the analogue's, already multiplied (divided) by analogue_viscosity_factor.
+  bool stokes_analogue = false;
+  double analogue_viscosity_factor = 1.0;
   // [cell]
   double initial_height = 0.5;      // y0 / H of the centroid at release
   int disc_axis = 1;                // 0 x, 1 y, 2 z: direction of the disc's symmetry axis at release

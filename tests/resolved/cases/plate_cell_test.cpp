@@ -15,8 +15,10 @@
 #include "resolved/cases/plate_cell_checks.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
+#include "resolved/cases/stokes_analogue.hpp"
 #include "resolved/measure/flow_mode.hpp"
 #include "resolved/measure/whole_revolutions.hpp"
+#include "resolved/membrane/triangle_mesh.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -261,6 +263,57 @@ TEST(ShearResults, ATumblingCellDoesNotTankTread) {
 TEST(PlateCellConfig, StopWhenSettledIsReadForShearOnly) {
   EXPECT_TRUE(read(shipped("shear/fischer-korzeniewski"), PlateFlow::shear).stop_when_settled);
   EXPECT_FALSE(read(shipped("shear/membrane-viscosity"), PlateFlow::shear).stop_when_settled);   // absent: off
+}
+
+TEST(StokesAnalogue, TheSmallestPowerOfTwoBringsBothNumbersUnderTheirCaps) {
+  // Re_p = gamma a^2 / nu and St = m gamma / (6 pi mu a) both fall as factor^2 at fixed Ca (gamma ~ 1 / factor).
+  const double a = 4e-6;
+  const double nu = 1e-6;
+  const double rho = 1000.0;
+  auto input = [&](double re_p, double stokes) {
+    const double gamma = re_p * nu / (a * a);
+    return StokesAnalogueInput{.kinematic_viscosity_m2_s = nu, .density_kg_m3 = rho, .shear_rate_1_s = gamma,
+                               .cell_mass_kg = stokes * 6.0 * std::numbers::pi * rho * nu * a / gamma,
+                               .cell_radius_m = a};
+  };
+  EXPECT_EQ(stokes_analogue_viscosity_factor(input(0.004, 0.04)), 1.0);
+  EXPECT_EQ(stokes_analogue_viscosity_factor(input(0.016, 0.01)), 2.0);   // Re_p 0.016 / 4 = 0.004 <= 0.005
+  EXPECT_EQ(stokes_analogue_viscosity_factor(input(0.001, 0.21)), 4.0);   // St 0.21 / 4 = 0.0525 > 0.05; / 16 = 0.013
+  EXPECT_EQ(stokes_analogue_viscosity_factor(input(0.1, 0.01)), 8.0);     // Re_p 0.1 / 16 = 0.0063 > 0.005; / 64 = 0.0016
+}
+
+TEST(PlateCellConfig, TheStokesAnalogueRaisesEveryViscosityAndKeepsTheGroups) {
+  const std::string base = shipped("shear/fischer-korzeniewski/medium-10.7");   // with stokes_analogue = true
+  const PlateCellConfig plain = read(with(base, "stokes_analogue = true", "stokes_analogue = false"), PlateFlow::shear);
+  const PlateCellConfig c = read(base, PlateFlow::shear);
+  EXPECT_EQ(plain.analogue_viscosity_factor, 1.0);
+  const double f = c.analogue_viscosity_factor;
+  ASSERT_GT(f, 1.0);   // the shipped Ca 2.04 runs at St ~0.18 with the plasma's viscosity
+  EXPECT_DOUBLE_EQ(c.kinematic_viscosity_m2_s, f * plain.kinematic_viscosity_m2_s);
+  EXPECT_DOUBLE_EQ(c.shear_rate_1_s, plain.shear_rate_1_s / f);   // Ca = mu gamma a / G_s kept
+  EXPECT_DOUBLE_EQ(c.numerics.viscosity_ratio, plain.numerics.viscosity_ratio);
+  EXPECT_DOUBLE_EQ(c.membrane.material.viscosity_N_s_m, f * plain.membrane.material.viscosity_N_s_m);   // Bq kept
+  EXPECT_DOUBLE_EQ(c.u_max_m_s, 0.5 * c.shear_rate_1_s * c.gap_m);
+  EXPECT_DOUBLE_EQ(c.max_time_s, f * plain.max_time_s);   // the same number of Jeffery periods
+  // The factor is the smallest power of two with Re_p <= 0.005 and St <= 0.05 (the cell's mass as npFEM lumps it).
+  const double mass_kg = c.membrane.material.density_kg_m3 * c.numerics.membrane_mass_factor *
+                         mesh_volume_m3(build_membrane_mesh(c.membrane));
+  auto stokes = [&](const PlateCellConfig& k) {
+    return mass_kg * k.shear_rate_1_s / (6.0 * std::numbers::pi * k.density_kg_m3 * k.kinematic_viscosity_m2_s * kCellRadius_m);
+  };
+  auto re_p = [](const PlateCellConfig& k) { return k.shear_rate_1_s * kCellRadius_m * kCellRadius_m / k.kinematic_viscosity_m2_s; };
+  EXPECT_LE(stokes(c), kAnalogueMaxCellStokes);
+  EXPECT_LE(re_p(c), kAnalogueMaxParticleReynolds);
+  EXPECT_TRUE(4.0 * stokes(c) > kAnalogueMaxCellStokes || 4.0 * re_p(c) > kAnalogueMaxParticleReynolds);
+}
+
+TEST(PlateCellConfig, TheStokesAnalogueNeedsTheCapillaryNumberAndAGivenMassFactor) {
+  const std::string analogue = shipped("shear/fischer-korzeniewski/medium-10.7");   // with stokes_analogue = true
+  EXPECT_THROW(read(with(analogue, "membrane_mass_factor = 100", "#"), PlateFlow::shear), common::ConfigError);
+  EXPECT_THROW(read(with(shipped("shear"), "[flow]\n", "[flow]\nstokes_analogue = true\n"), PlateFlow::shear),
+               common::ConfigError);   // shear_rate_1_s: the analogue would change Ca
+  EXPECT_THROW(read(with(shipped("migration"), "[flow]\n", "[flow]\nstokes_analogue = true\n"), PlateFlow::poiseuille),
+               common::ConfigError);
 }
 
 /// The shipped migration case's checks on a synthetic centroid track y(t) / H (samples every 1 ms from the release,
