@@ -159,16 +159,17 @@ bool PlateCellSeries::tank_treading_settled() const {
   const std::size_t n = samples_.size();
   if (n < 4 || samples_.back().time_s < kMinJefferyPeriodsToStop * jeffery_period(config_.shear_rate_1_s)) return false;
   const std::size_t from = first_settled(n);
-  std::vector<double> t, incl, phase;
+  std::vector<double> t, incl, phase, di;
   for (const auto& s : samples_) {
     t.push_back(s.time_s);
     incl.push_back(s.inclination_rad);
     phase.push_back(s.marker_phase_rad);
+    di.push_back(s.di);
   }
   const FlowMode mode = classify_flow_mode(std::span(incl).subspan(from), std::span(phase).subspan(from));
   unwrap(phase, 2.0 * std::numbers::pi);
   const WholeRevolutions rev = whole_revolutions(t, phase, from);
-  return membrane_tank_treads(mode, rev) && rev.settled(kRevolutionTolerance);
+  return membrane_tank_treads(mode, rev) && rev.settled(kRevolutionTolerance, t, di);
 }
 
 nlohmann::json PlateCellSeries::results() const {
@@ -230,19 +231,20 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["intrinsic_viscosity"] = sum_v > 0.0 ? (sum_s / n) / (mu * config_.shear_rate_1_s * sum_v / n) : 0.0;
   r["period_s"] = mode == FlowMode::tumbling ? tumble.period_s
                   : (mode == FlowMode::tank_treading && rate != 0.0 ? 2.0 * std::numbers::pi / std::abs(rate) : 0.0);
-  settled_tank_treading(mode, t, phase, from, r);
+  settled_tank_treading(mode, t, phase, di, from, r);
   return r;
 }
 
 void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const double> t, std::span<const double> phase,
-                                            std::size_t from, nlohmann::json& r) const {
-  // The whole revolutions of the marker after the transient: settled when the last two take as long as the two before,
-  // and the window of the means a validation compares (whole revolutions: whole swings of the inclination and the DI).
+                                            std::span<const double> di, std::size_t from, nlohmann::json& r) const {
+  // The whole revolutions of the marker after the transient: settled when the last two take as long as the two before
+  // and the cell's mean DI over them is that over the two before, and the window of the means a validation compares
+  // (whole revolutions: whole swings of the inclination and the DI).
   const WholeRevolutions rev = whole_revolutions(t, phase, from);
   const bool tank_treading = membrane_tank_treads(mode, rev);
   r["membrane_tank_treads"] = tank_treading;
   r["revolution_periods_s"] = rev.periods_s;
-  r["tank_treading_settled"] = tank_treading && rev.settled(kRevolutionTolerance);
+  r["tank_treading_settled"] = tank_treading && rev.settled(kRevolutionTolerance, t, di);
   r["tank_treading_settled_tolerance"] = kRevolutionTolerance;
   const double rate = tank_treading ? rev.rate_rad_s() : 0.0;
   r["tank_treading_frequency_settled_hz"] = rate / (2.0 * std::numbers::pi);
@@ -259,13 +261,13 @@ void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const doubl
   }
   // Half the range of the outline's angle over whole revolutions (a swinging cell swings twice per revolution).
   r["swinging_amplitude_deg"] = 0.5 * (incl_max - incl_min) * 180.0 / std::numbers::pi;
-  const double di = n > 0.0 ? sum_di / n : r.value("di_mean", 0.0);
+  const double di_window = n > 0.0 ? sum_di / n : r.value("di_mean", 0.0);
   r["mean_inclination_settled_deg"] = n > 0.0 ? sum_incl / n * 180.0 / std::numbers::pi : r.value("mean_inclination_deg", 0.0);
-  r["di_settled"] = di;
+  r["di_settled"] = di_window;
   r["settled_window_s"] = {rev.window_start_s, rev.window_end_s};
   // The bound of the measured axes: DI's longest and shortest extents, which for a tank-treading RBC both lie in the
   // shear plane (its axis of symmetry turns into that plane).
-  r["keller_skalak_bound_rad_s"] = keller_skalak_bound(config_.shear_rate_1_s, di);
+  r["keller_skalak_bound_rad_s"] = keller_skalak_bound(config_.shear_rate_1_s, di_window);
 }
 
 nlohmann::json PlateCellSeries::migration_results() const {

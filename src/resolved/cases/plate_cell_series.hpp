@@ -51,8 +51,8 @@ class PlateCellSeries {
   [[nodiscard]] nlohmann::json shear_results() const;
   [[nodiscard]] nlohmann::json migration_results() const;
   [[nodiscard]] nlohmann::json groups() const;
-  void settled_tank_treading(FlowMode mode, std::span<const double> t, std::span<const double> phase, std::size_t from,
-                             nlohmann::json& r) const;
+  void settled_tank_treading(FlowMode mode, std::span<const double> t, std::span<const double> phase,
+                             std::span<const double> di, std::size_t from, nlohmann::json& r) const;
 
   PlateCellConfig config_;
   std::vector<PlateCellSample> samples_;

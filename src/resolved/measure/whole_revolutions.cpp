@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "resolved/measure/whole_revolutions.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,6 +17,28 @@ bool WholeRevolutions::settled(double tolerance) const {
   const double last = periods_s[0] + periods_s[1];
   const double before = periods_s[2] + periods_s[3];
   return std::abs(last - before) <= tolerance * last;
+}
+
+namespace {
+
+/// Mean of the samples with begin_s <= t < end_s (uniformly sampled); 0 without one.
+double mean_between(std::span<const double> time_s, std::span<const double> value, double begin_s, double end_s) {
+  double sum = 0.0, n = 0.0;
+  for (std::size_t i = 0; i < std::min(time_s.size(), value.size()); ++i) {
+    if (time_s[i] < begin_s || time_s[i] >= end_s) continue;
+    sum += value[i];
+    n += 1.0;
+  }
+  return n > 0.0 ? sum / n : 0.0;
+}
+
+}  // namespace
+
+bool WholeRevolutions::settled(double tolerance, std::span<const double> time_s, std::span<const double> value) const {
+  if (!settled(tolerance) || ends_s.size() < 5) return false;
+  const double last = mean_between(time_s, value, ends_s[2], ends_s[0]);
+  const double before = mean_between(time_s, value, ends_s[4], ends_s[2]);
+  return std::abs(last - before) <= tolerance * std::abs(last);
 }
 
 WholeRevolutions whole_revolutions(std::span<const double> time_s, std::span<const double> phase_rad, std::size_t from) {
@@ -41,6 +64,7 @@ WholeRevolutions whole_revolutions(std::span<const double> time_s, std::span<con
     }
   }
   if (r.periods_s.empty()) return r;
+  r.ends_s = ends;
   r.window_end_s = ends.front();
   r.window_start_s = ends.back();
   return r;

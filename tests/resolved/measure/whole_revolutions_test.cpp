@@ -84,6 +84,25 @@ TEST(WholeRevolutions, AMarkerThatIsStillSpeedingUpIsNotSettled) {
   EXPECT_FALSE(r.settled(0.02));
 }
 
+TEST(WholeRevolutions, AShapeThatStillChangesIsNotSettledThoughItsPeriodsRepeat) {
+  // Uniform revolutions (periods exact), DI swinging twice per revolution about a mean that is steady in one series
+  // and falls by 2 % per revolution in the other (the swinging cell at 10.7 mPa s, Ca 2.04 lost ~3 % per revolution).
+  const double rate = 50.0;
+  const Series s = marker(rate, 1.2, 1e-4, 0.0);
+  std::vector<double> steady, drifting;
+  for (const double t : s.t) {
+    const double swing = 0.05 * std::cos(2.0 * rate * t);
+    steady.push_back(0.4 + swing);
+    drifting.push_back(0.4 * std::pow(0.98, t * rate / kTwoPi) + swing);
+  }
+  const WholeRevolutions r = whole_revolutions(s.t, s.phase, s.t.size() / 2);
+  ASSERT_EQ(r.ends_s.size(), 5u);   // four whole revolutions: five ends
+  EXPECT_TRUE(r.settled(0.02));
+  EXPECT_TRUE(r.settled(0.02, s.t, steady));      // whole swings average out exactly (sampling aside)
+  EXPECT_FALSE(r.settled(0.02, s.t, drifting));   // last pair 4 % below the pair before
+  EXPECT_TRUE(r.settled(0.05, s.t, drifting));
+}
+
 TEST(WholeRevolutions, FewerThanFourRevolutionsAfterTheTransientAreNotSettled) {
   const Series s = marker(50.0, 1.0, 1e-4, 0.0);   // 3.98 revolutions in the second half
   const WholeRevolutions r = whole_revolutions(s.t, s.phase, s.t.size() / 2);
