@@ -34,12 +34,10 @@ std::array<int, 3> plate_nodes(const PlateCellConfig& c) {
           static_cast<int>(std::lround(c.width_m / dx))};
 }
 
-/// The cell's mass as the membrane carries it (its density times the mass factor, times the rest volume) over the
-/// Stokes drag time scale of a sphere of radius a: m gamma_dot / (6 pi mu a).
-double cell_stokes_number(const PlateCellConfig& c, const NpfemSolver& membrane) {
-  const double mass_kg = membrane.vertex_mass_kg() * membrane.vertex_count();
-  const double mu = c.density_kg_m3 * c.kinematic_viscosity_m2_s;
-  return mass_kg * c.shear_rate_1_s / (6.0 * std::numbers::pi * mu * kCellRadius_m);
+/// With the cell's mass as the membrane carries it (its density times the mass factor, times the rest volume).
+double membrane_cell_stokes_number(const PlateCellConfig& c, const NpfemSolver& membrane) {
+  return cell_stokes_number(membrane.vertex_mass_kg() * membrane.vertex_count(), c.shear_rate_1_s,
+                            c.density_kg_m3 * c.kinematic_viscosity_m2_s, kCellRadius_m);
 }
 
 /// Node j sits at y = (j + 1/2) dx: the half-way walls of the y faces are then at y = 0 and y = H = ny dx.
@@ -147,7 +145,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   if (c.stokes_analogue) {
     ctx.log().info("Stokes-flow analogue: every viscosity x {:g} (Ca, viscosity ratio and Bq kept)", c.analogue_viscosity_factor);
   }
-  const double stokes_number = cell_stokes_number(c, *r.membrane);
+  const double stokes_number = membrane_cell_stokes_number(c, *r.membrane);
   if (stokes_number > kAnalogueMaxCellStokes * (1.0 + 1e-9)) {
     ctx.log().warning("cell Stokes number {:.3g} (membrane mass factor {:.3g}) is above {}: the membrane's numerical mass "
                       "changes the motion (docs/resolved-coupling.md, \"The membrane's mass in the shear analogue\"); "

@@ -16,6 +16,10 @@ inline constexpr double kAnalogueMaxParticleReynolds = 0.005;
 /// 0.087 gave 2.5 / 2.5 / 2.7 deg, f / gamma_dot 0.0434 / 0.0443 / 0.0427 (measured, same section).
 inline constexpr double kAnalogueMaxCellStokes = 0.05;
 
+/// The cell's Stokes number m gamma_dot / (6 pi mu a): its momentum relaxation time (Stokes drag of a sphere of radius
+/// a) against the shear time.
+[[nodiscard]] double cell_stokes_number(double mass_kg, double shear_rate_1_s, double viscosity_Pa_s, double radius_m);
+
 /// What the analogue starts from: the case's viscosity, the shear rate its Ca gives there, the cell's mass.
 struct StokesAnalogueInput {
   double kinematic_viscosity_m2_s = 0.0;
