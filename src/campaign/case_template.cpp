@@ -2,6 +2,8 @@
 // Writes the case file of one campaign run.
 #include "campaign/case_template.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -55,6 +57,21 @@ void set_key(toml::table& doc, const std::string& key, Value value, const std::s
   t->insert_or_assign(key.substr(start), std::move(value));
 }
 
+/// An override's number as the template holds that key: a count (an integer there, e.g. numerics.membrane_every)
+/// stays an integer, which the case reader requires; anything else is a float.
+void set_override(toml::table& doc, const GridOverride& o, const std::string& where) {
+  const toml::node_view<toml::node> current = doc.at_path(o.case_key);
+  if (current.is_integer()) {
+    if (o.value != std::floor(o.value)) {
+      throw common::ConfigError(fmt::format("{} value = {}: {} is an integer in the template; give an integer", where,
+                                            o.value, o.case_key));
+    }
+    set_key(doc, o.case_key, static_cast<std::int64_t>(o.value), where);
+  } else {
+    set_key(doc, o.case_key, o.value, where);
+  }
+}
+
 }  // namespace
 
 void write_run_case(const CampaignSpec& spec, const GridPoint& point, const std::filesystem::path& file) {
@@ -76,7 +93,7 @@ void write_run_case(const CampaignSpec& spec, const GridPoint& point, const std:
   std::string applied;
   for (const GridOverride& o : spec.overrides) {
     if (!matches(o, spec.axes, point.values)) continue;
-    set_key(doc, o.case_key, o.value, fmt::format("{}: [override.{}]", campaign_file, o.name));
+    set_override(doc, o, fmt::format("{}: [override.{}]", campaign_file, o.name));
     applied += fmt::format("# [override.{}] {} = {}: {}\n", o.name, o.case_key, o.value, o.why);
   }
   std::ostringstream text;

@@ -203,6 +203,26 @@ TEST(Campaign, AnOverrideChangesOnlyTheRunsItMatchesAndSaysWhy) {
   }
 }
 
+TEST(Campaign, AnOverrideOfACountKeepsItAnInteger) {
+  // The case readers require counts (output.vtk_frames, numerics.membrane_every) as TOML integers: an override of a key
+  // the template holds as an integer writes an integer, and refuses a fraction.
+  const auto dir = make_campaign("override_integer", "[0.1, 0.2]");
+  std::ofstream(dir / "campaign.toml", std::ios::app)
+      << "[override.frames]\nwhen = { re = 0.2 }\nkey = \"output.vtk_frames\"\nvalue = 2\nwhy = \"a count\"\n";
+  const auto spec = hs::campaign::read_campaign_spec(dir);
+  const auto points = hs::campaign::grid_points(spec);
+  hs::campaign::write_run_case(spec, points[1], dir / "run.toml");
+  std::ifstream in(dir / "run.toml");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("vtk_frames = 2\n"), std::string::npos) << text;
+  const auto fraction = make_campaign("override_fraction", "[0.1, 0.2]");
+  std::ofstream(fraction / "campaign.toml", std::ios::app)
+      << "[override.frames]\nwhen = { re = 0.2 }\nkey = \"output.vtk_frames\"\nvalue = 2.5\nwhy = \"a count\"\n";
+  const auto bad = hs::campaign::read_campaign_spec(fraction);
+  EXPECT_THROW(hs::campaign::write_run_case(bad, hs::campaign::grid_points(bad)[1], fraction / "run.toml"),
+               hs::common::ConfigError);
+}
+
 /// True when a campaign on re = [0.1, 0.2] with `overrides` appended to its campaign.toml is refused as bad input.
 bool refused(const std::string& name, const std::string& overrides) {
   const auto dir = make_campaign(name, "[0.1, 0.2]");
