@@ -65,6 +65,29 @@ nlohmann::json membrane_solve_summary(const NpfemStatistics& stats) {
           {"unconverged_mean_gradient_over_tolerance", per(stats.unconverged_gradient_sum, stats.unconverged_steps)}};
 }
 
+void expect_membrane_converged(common::CheckList& checks, const nlohmann::json& membrane_solve, bool quick,
+                               const std::string& label) {
+  const std::string what = fmt::format("the membrane solve converges on >= {:.0f} % of its steps{}",
+                                       100.0 * kMembraneConvergedShare, label.empty() ? "" : " (" + label + ")");
+  const long steps = membrane_solve.at("steps").get<long>();
+  if (steps == 0) {
+    checks.skip(what, "no membrane step");
+    return;
+  }
+  const long unconverged = membrane_solve.at("unconverged_steps").get<long>();
+  const double share = static_cast<double>(unconverged) / static_cast<double>(steps);
+  const std::string detail =
+      fmt::format("{} of {} steps unconverged ({:.3g} %: {} at the iteration cap, {} in the line search)", unconverged,
+                  steps, 100.0 * share, membrane_solve.at("iteration_cap_stops").get<long>(),
+                  membrane_solve.at("line_search_stops").get<long>());
+  const bool passed = share <= 1.0 - kMembraneConvergedShare;
+  if (passed || !quick) {
+    checks.expect(what, passed, detail);
+  } else {
+    checks.skip(what, "--quick: " + detail + ", too few steps past the start to judge a run");
+  }
+}
+
 TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis) {
   TriangleMesh mesh = build_membrane_mesh(membrane);
   for (auto& v : mesh.vertices_m) {

@@ -155,7 +155,8 @@ nlohmann::json summary_of(const StenosisRun& r, const StenosisSeries& series, co
                          {"steps", loop.step()},
                          {"simulated_time_s", simulated_s},
                          {"wall_s_per_simulated_ms", wall_s / (1e3 * simulated_s)},
-                         {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps}};
+                         {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps},
+                         {"membrane_solve", membrane_solve_summary(r.membrane->statistics())}};
   summary["timings"] = loop.timings();
   return summary;
 }
@@ -231,7 +232,9 @@ int run_stenosis(const common::CaseRequest& request) {
     checks.skip("the cell passes the throat (centroid past stop_x_m)",
                 fmt::format("--quick: {:.4g} s simulated, too short to reach stop_x_m", simulated_s));
   }
-  ctx.write_summary(summary_of(r, series, plasma, loop, ctx.wall_seconds()), checks);
+  const nlohmann::json summary = summary_of(r, series, plasma, loop, ctx.wall_seconds());
+  expect_membrane_converged(checks, summary["numerics"]["membrane_solve"], request.quick);
+  ctx.write_summary(summary, checks);
   checks.print(ctx.log(), "stenosis");
   return checks.exit_code();
 }

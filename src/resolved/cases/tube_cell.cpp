@@ -359,6 +359,11 @@ int run_tube_cell(const common::CaseRequest& request) {
   if (c.extrapolate_lattice_memory) {
     expect_settled("the half-time-step stage settles (lattice-memory extrapolation)", two, half_time_step_stage(c).max_time_s);
   }
+  expect_membrane_converged(checks, one.numerics["membrane_solve"], request.quick,
+                            c.extrapolate_lattice_memory ? "stage 1" : "");
+  if (c.extrapolate_lattice_memory) {
+    expect_membrane_converged(checks, two.numerics["membrane_solve"], request.quick, "half-time-step stage");
+  }
   ctx.write_summary(summary, checks);
   print_result(ctx.log(), summary["results"], c.setup == TubeCellSetup::drag, settled);
   checks.print(ctx.log(), "tube-cell");
