@@ -36,7 +36,7 @@ struct NpfemStatistics {
   long steps = 0;
   long iterations = 0;
   long unconverged_steps = 0;
-  long line_search_stops = 0;        // unconverged because no step decreased g (at the round-off floor: converged)
+  long line_search_stops = 0;        // unconverged: no step decreased g where the direction promised more than round-off
   long iteration_cap_stops = 0;      // unconverged because max_iterations was reached
   double unconverged_gradient_sum = 0.0;   // sum over unconverged steps of max |grad g| / tolerance (mean: diagnostics)
   double factorisation_s = 0.0;  // wall time of the one-time sparse Cholesky factorisations
