@@ -97,6 +97,13 @@ TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis) 
   return mesh;
 }
 
+TriangleMesh cell_mesh_tilted_from_y(const MembraneConfig& membrane, double tilt_rad) {
+  TriangleMesh mesh = cell_mesh_with_disc_axis(membrane, 1);
+  const double c = std::cos(tilt_rad), s = std::sin(tilt_rad);
+  for (auto& v : mesh.vertices_m) v = {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
+  return mesh;
+}
+
 void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const MembraneConfig& membrane, const CellNumerics& n,
                       const Vec3& centroid_m,
                       std::function<void(std::span<const Vec3>, std::vector<Vec3>&)> add_forces_N) {

@@ -44,6 +44,8 @@ struct CellSimulation {
 
 /// The generated (or read) RBC mesh with its disc axis (generated along z) turned to `axis` (0 x, 1 y, 2 z).
 [[nodiscard]] TriangleMesh cell_mesh_with_disc_axis(const MembraneConfig& membrane, int axis);
+/// The same with the disc axis along y, then turned by `tilt_rad` about x toward z (tube-cell's disc_tilt_deg).
+[[nodiscard]] TriangleMesh cell_mesh_tilted_from_y(const MembraneConfig& membrane, double tilt_rad);
 
 /// Creates the npFEM solver (material density scaled by n.membrane_mass_factor, step membrane_every dt) with its
 /// centroid at `centroid_m`, then the CoupledCell (median filter on, as Palabos-npFEM). With n.viscosity_ratio != 1

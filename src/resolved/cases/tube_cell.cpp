@@ -67,9 +67,10 @@ std::unique_ptr<TubeCellRun> build(const TubeCellConfig& c) {
   r.lattice->set_body_force({});
   r.lattice->enable_force_field();
   r.lattice->initialize();
-  // The disc axis turned from z to y: the disc then lies in the plane of the flow (z) and the radial direction (x),
-  // the plane in which it tumbles or tank-treads.
-  add_coupled_cell(r, cell_mesh_with_disc_axis(c.membrane, 1), c.membrane, numerics_of(c),
+  // The disc axis turned from z to y, the vorticity at the cell: the disc lies in the shear plane of the flow (z) and the
+  // radial direction (x), a rolling start that the mirror symmetry y -> -y keeps. disc_tilt_deg turns the normal about
+  // x toward the flow, out of that symmetry, to see which motion the cell chooses.
+  add_coupled_cell(r, cell_mesh_tilted_from_y(c.membrane, c.disc_tilt_rad), c.membrane, numerics_of(c),
                    Vec3{c.radial_position * c.radius_m, 0.0, 0.5 * c.length_m});
   r.membrane->set_center_constraint(c.setup == TubeCellSetup::drag ? CenterConstraint::fixed : CenterConstraint::axis,
                                     {0.0, 0.0, 1.0});
@@ -106,6 +107,8 @@ TubeCellSample sample_state(const TubeCellRun& r, double time_s, const Vec3& for
   const Vec3 radial = rr > 1e-12 ? Vec3{s.centroid_m.x / rr, s.centroid_m.y / rr, 0.0} : Vec3{1.0, 0.0, 0.0};
   s.di = shape.deformation_index();
   s.inclination_rad = inclination_angle(shape, {0.0, 0.0, 1.0}, radial);
+  // Poiseuille flow along z turns about the azimuthal direction z x e_r (on the axis: the x-z plane's normal, y).
+  s.normal_to_vorticity_rad = normal_to_vorticity_angle(shape, {-radial.y, radial.x, 0.0});
   const Vec3 d = x[0] - s.centroid_m;
   s.marker_phase_rad = std::atan2(common::dot(d, radial), d.z);
   double vz = 0.0;
@@ -249,11 +252,12 @@ void seed_membrane(TubeCellRun& r, const std::vector<double>& stage_one_membrane
 void print_stage(common::Log& log, const TubeCellConfig& c, const TubeCellRun& r, int stage) {
   log.info("tube-cell ({}){}: r* = {}, Re = {}, U_max = {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
            "tau = {:.3f}, peak lattice velocity {:.4g}, membrane every {} steps, viscosity ratio {:.4g} "
-           "(cytoplasm tau {:.3f})",
+           "(cytoplasm tau {:.3f}){}",
            c.setup == TubeCellSetup::drag ? "drag" : "lift", stage == 1 ? "" : ", stage 2 at half the time step",
            c.radial_position, c.reynolds, c.u_max_m_s, r.nodes[0], r.nodes[1], r.nodes[2], c.dx_m, c.dt_s,
            c.collision.tau, c.lattice_velocity, c.membrane_every, c.viscosity_ratio,
-           c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau);
+           c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau,
+           c.disc_tilt_rad != 0.0 ? fmt::format(", disc tilted {:g} deg from the vorticity", c.disc_tilt_rad * 180.0 / std::numbers::pi) : "");
 }
 
 /// Replaces the period means with their values at lattice Weissenberg number 0 (linear through the two stages) and

@@ -110,6 +110,7 @@ TubeCellConfig read_tube_cell(hs::common::ConfigFile& file, bool quick) {
   auto cell = root.section("cell");
   c.setup = cell.one_of("setup", {"drag", "lift"}) == "drag" ? TubeCellSetup::drag : TubeCellSetup::lift;
   c.radial_position = cell.number_in("radial_position", 0.0, 0.9);
+  c.disc_tilt_rad = cell.number_in_or("disc_tilt_deg", 0.0, 90.0, 0.0) * std::numbers::pi / 180.0;
   const double viscosity_ratio = read_cytoplasm_viscosity_ratio(cell, c.density_kg_m3 * c.kinematic_viscosity_m2_s);
   auto membrane = root.section_or_empty("membrane");
   c.membrane = parse_membrane_config(membrane);

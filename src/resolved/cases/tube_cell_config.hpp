@@ -24,6 +24,7 @@ struct TubeCellConfig {
   // [cell]
   TubeCellSetup setup;
   double radial_position;           // r* = r / R of the centre of mass
+  double disc_tilt_rad = 0.0;       // start: the disc normal's angle from the vorticity e_theta toward the flow (0: rolling)
   MembraneConfig membrane;          // [membrane]
   // [numerics]
   double dx_m;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "common/dimensionless_groups.hpp"
@@ -17,7 +18,7 @@ namespace {
 /// Share of the series discarded as start-up transient before settling is judged.
 constexpr double kTransientFraction = 0.25;
 
-enum Column { kDi, kCd, kCl, kInclination, kPhase };
+enum Column { kDi, kCd, kCl, kInclination, kPhase, kNormalToVorticity };
 
 /// Viscous spin-up times R^2 / nu that a steady window must span at least.
 constexpr double kSpinUpTimes = 5.0;
@@ -44,6 +45,19 @@ double trailing_thirds_spread(const std::vector<double>& v, std::size_t count, d
   return (*hi - *lo) / std::max({std::abs(mean), floor, 1e-300});
 }
 
+/// Mean of the finite values (NaN when there are none).
+double finite_mean(const std::vector<double>& v) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const double x : v) {
+    if (std::isfinite(x)) {
+      sum += x;
+      ++n;
+    }
+  }
+  return n > 0 ? sum / static_cast<double>(n) : std::nan("");
+}
+
 nlohmann::json average_json(const PeriodAverage& a) {
   return {{"mean", a.mean}, {"spread", a.spread}, {"periods", a.periods}, {"period_s", a.period_s}, {"steady", a.steady}};
 }
@@ -52,7 +66,7 @@ nlohmann::json average_json(const PeriodAverage& a) {
 
 std::vector<std::string> tube_cell_columns() {
   return {"time_s", "drag_N", "lift_N", "cd", "cl", "di", "inclination_rad", "centroid_x_m", "centroid_y_m",
-          "centroid_z_m", "r_star", "axial_velocity_m_s", "traction_drag_N", "traction_lift_N"};
+          "centroid_z_m", "r_star", "axial_velocity_m_s", "traction_drag_N", "traction_lift_N", "normal_to_vorticity_rad"};
 }
 
 TubeCellSeries::TubeCellSeries(const TubeCellConfig& config, double cell_volume_m3)
@@ -62,6 +76,9 @@ void TubeCellSeries::add(const TubeCellSample& sample) { samples_.push_back(samp
 
 namespace {
 constexpr std::size_t kPackedFields = 15;
+/// The last slot was a spare 0 before the disc orientation was sampled. The angle (in [0, pi/2], exactly 0 for the
+/// resting disc's rolling start) is stored plus this offset, so that a 0 still means "not sampled" (older checkpoints).
+constexpr double kOrientationOffset = 1.0;
 }  // namespace
 
 std::vector<double> TubeCellSeries::pack() const {
@@ -70,7 +87,7 @@ std::vector<double> TubeCellSeries::pack() const {
   for (const auto& s : samples_) {
     out.insert(out.end(), {s.time_s, s.force_N.x, s.force_N.y, s.force_N.z, s.traction_force_N.x, s.traction_force_N.y,
                            s.traction_force_N.z, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z, s.axial_velocity_m_s,
-                           s.di, s.inclination_rad, s.marker_phase_rad, 0.0});
+                           s.di, s.inclination_rad, s.marker_phase_rad, kOrientationOffset + s.normal_to_vorticity_rad});
   }
   return out;
 }
@@ -81,7 +98,9 @@ void TubeCellSeries::unpack(std::span<const double> flat) {
     const double* v = flat.data() + k;
     samples_.push_back({.time_s = v[0], .force_N = {v[1], v[2], v[3]}, .traction_force_N = {v[4], v[5], v[6]},
                         .centroid_m = {v[7], v[8], v[9]}, .axial_velocity_m_s = v[10], .di = v[11],
-                        .inclination_rad = v[12], .marker_phase_rad = v[13]});
+                        .inclination_rad = v[12], .marker_phase_rad = v[13],
+                        .normal_to_vorticity_rad = v[14] == 0.0 ? std::numeric_limits<double>::quiet_NaN()
+                                                                : v[14] - kOrientationOffset});
   }
 }
 
@@ -113,7 +132,7 @@ std::vector<double> TubeCellSeries::row(const TubeCellSample& s) const {
   return {s.time_s, drag_N(s), lift_N(s), common::force_coefficient(drag_N(s), rho, u, particle_diameter_m_),
           common::force_coefficient(lift_N(s), rho, u_flow, particle_diameter_m_), s.di, s.inclination_rad,
           s.centroid_m.x, s.centroid_m.y, s.centroid_m.z, r / config_.radius_m, s.axial_velocity_m_s,
-          s.traction_force_N.z, traction_lift};
+          s.traction_force_N.z, traction_lift, s.normal_to_vorticity_rad};
 }
 
 std::vector<double> TubeCellSeries::column(int which) const {
@@ -126,6 +145,7 @@ std::vector<double> TubeCellSeries::column(int which) const {
       case kCd: out.push_back(r[3]); break;
       case kCl: out.push_back(r[4]); break;
       case kInclination: out.push_back(s.inclination_rad); break;
+      case kNormalToVorticity: out.push_back(s.normal_to_vorticity_rad); break;
       default: out.push_back(s.marker_phase_rad); break;
     }
   }
@@ -212,6 +232,9 @@ nlohmann::json TubeCellSeries::results() const {
   r["periodic"] = period.periodic;
   r["steady"] = period.steady;
   r["flow_mode"] = to_string(classify_flow_mode(inclination, phase));
+  // The long axis' inclination cannot tell a rolling disc from a tumbling one (both turn it in the shear plane).
+  r["disc_orientation"] = classify_disc_orientation(after(column(kNormalToVorticity)));
+  r["normal_to_vorticity_deg_mean"] = finite_mean(after(column(kNormalToVorticity))) * 180.0 / std::numbers::pi;
   r["averages"] = {{"di", average_json(a_di)}, {"cd", average_json(a_cd)}, {"cl", average_json(a_cl)}};
   r["reynolds"] = common::channel_reynolds(config_.density_kg_m3, 2.0 * config_.radius_m, config_.u_max_m_s, mu);
   r["r_star"] = r_m / config_.radius_m;

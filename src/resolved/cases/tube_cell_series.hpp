@@ -2,6 +2,7 @@
 // The sampled time series of a tube-cell run and its reduction to period averages and dimensionless groups.
 #pragma once
 
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ struct TubeCellSample {
   double di = 0.0;
   double inclination_rad = 0.0;
   double marker_phase_rad = 0.0;
+  /// Disc normal against the local vorticity e_theta (normal_to_vorticity_angle): ~0 rolling, ~pi/2 turning in the
+  /// shear plane. NaN for samples restored from a checkpoint written before the measure existed.
+  double normal_to_vorticity_rad = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Columns of timeseries.csv, and the values of one row.

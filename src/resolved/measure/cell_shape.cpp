@@ -70,4 +70,9 @@ double inclination_angle(const CellShape& shape, const Vec3& flow, const Vec3& g
   return angle;
 }
 
+double normal_to_vorticity_angle(const CellShape& shape, const Vec3& vorticity) {
+  const double c = std::abs(dot(shape.axes[2], normalized(vorticity)));   // an axis has no sign
+  return std::acos(std::min(1.0, c));
+}
+
 }  // namespace hs::resolved

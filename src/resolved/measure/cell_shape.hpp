@@ -36,4 +36,9 @@ CellShape measure_cell_shape(std::span<const common::Vec3> vertices_m);
 /// `gradient` (the shear plane): the inclination angle of tank-treading and the tumbling angle.
 double inclination_angle(const CellShape& shape, const common::Vec3& flow, const common::Vec3& gradient);
 
+/// Angle (rad, in [0, pi/2]) between the shortest principal axis (a disc's normal) and `vorticity`: ~0 for a disc that
+/// rolls (spins in the shear plane like a wheel), ~pi/2 for one that turns in the shear plane (tumbling, swinging,
+/// tank-treading), between for an oblique (kayaking) motion.
+double normal_to_vorticity_angle(const CellShape& shape, const common::Vec3& vorticity);
+
 }  // namespace hs::resolved

@@ -15,6 +15,8 @@
 #include "resolved/cases/cell_numerics.hpp"
 #include "resolved/cases/tube_cell_config.hpp"
 #include "resolved/cases/tube_cell_series.hpp"
+#include "resolved/measure/cell_shape.hpp"
+#include "resolved/cases/cell_simulation.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -237,4 +239,39 @@ TEST(CellNumerics, WarnsWhenTheKernelReachesPastTheCellsHalfThickness) {
 }
 
 }  // namespace
+TEST(TubeCellSeries, CheckpointsWithoutTheDiscOrientationResumeWithoutIt) {
+  // Checkpoints written before the disc orientation was sampled hold 0 in its slot: those samples read as unmeasured
+  // (NaN) and the orientation comes from the later ones only; new samples round-trip, a measured 0 included.
+  const TubeCellConfig c = read_drag_case(0.5);
+  TubeCellSeries series(c, 94.1e-18);
+  for (int k = 1; k <= 40; ++k) {
+    series.add({.time_s = k * c.sample_every_s, .force_N = {}, .traction_force_N = {}, .centroid_m = {1e-5, 0.0, 0.0},
+                .axial_velocity_m_s = 0.0, .di = 0.45, .inclination_rad = 0.0, .marker_phase_rad = 0.0,
+                .normal_to_vorticity_rad = k <= 20 ? std::nan("") : (k <= 30 ? 0.0 : 0.4)});
+  }
+  std::vector<double> packed = series.pack();
+  for (std::size_t k = 0; k < 20; ++k) packed[15 * k + 14] = 0.0;   // what the older checkpoints hold there
+  TubeCellSeries restored(c, 94.1e-18);
+  restored.unpack(packed);
+  ASSERT_EQ(restored.size(), 40u);
+  EXPECT_TRUE(std::isnan(restored.samples()[0].normal_to_vorticity_rad));
+  EXPECT_EQ(restored.samples()[20].normal_to_vorticity_rad, 0.0);   // a measured 0 (the rolling start) stays measured
+  EXPECT_NEAR(restored.samples()[39].normal_to_vorticity_rad, 0.4, 1e-15);
+  const auto results = restored.results();   // inside the membrane transient: all samples, the unmeasured skipped
+  EXPECT_EQ(results["disc_orientation"], "rolling");   // mean 0.2 rad = 11.5 deg
+  EXPECT_NEAR(results["normal_to_vorticity_deg_mean"].get<double>(), 0.2 * 180.0 / std::numbers::pi, 1e-9);
+}
+
+TEST(TubeCellConfig, TheDiscTiltTurnsTheStartingNormalAwayFromTheVorticity) {
+  // By default the disc lies in the shear plane (normal along y, the vorticity at a cell on the x axis): a rolling
+  // start. disc_tilt_deg turns the normal toward the flow z by that angle; beyond 90 deg it is refused.
+  const TubeCellConfig flat = read_drag_case(0.5);
+  EXPECT_EQ(flat.disc_tilt_rad, 0.0);
+  const TubeCellConfig tilted = read_drag_case(0.5, {{"[cell]\n", "[cell]\ndisc_tilt_deg = 30\n"}});
+  const CellShape shape = measure_cell_shape(cell_mesh_tilted_from_y(tilted.membrane, tilted.disc_tilt_rad).vertices_m);
+  EXPECT_NEAR(normal_to_vorticity_angle(shape, {0.0, 1.0, 0.0}), std::numbers::pi / 6.0, 1e-9);
+  EXPECT_NEAR(normal_to_vorticity_angle(shape, {0.0, 0.0, 1.0}), std::numbers::pi / 3.0, 1e-9);   // the turn is toward z
+  EXPECT_THROW(read_drag_case(0.5, {{"[cell]\n", "[cell]\ndisc_tilt_deg = 120\n"}}), common::ConfigError);
+}
+
 }  // namespace hs::resolved

@@ -62,3 +62,15 @@ TEST(CellShape, GyrationRadiiOfABoxsCorners) {
   EXPECT_NEAR(s.gyration_radii_m[2], 1.0, 1e-12);
   EXPECT_NEAR(s.gyration_deformation_index(), 3.0 / 5.0, 1e-12);
 }
+
+TEST(CellShape, DiscNormalAgainstTheVorticity) {
+  // The shortest axis of a (4, 2, 1) ellipsoid turned about z is z: 0 against a vorticity along z (a rolling disc),
+  // pi/2 against any direction in the x-y plane (a disc turning in that plane), and the tilt in between; the sign of
+  // the vorticity does not matter (an axis has none).
+  const auto s = measure_cell_shape(ellipsoid(4.0, 2.0, 1.0, 0.7, {1, 2, 3}));
+  using hs::resolved::normal_to_vorticity_angle;
+  EXPECT_NEAR(normal_to_vorticity_angle(s, {0, 0, 2}), 0.0, 1e-6);   // acos near 1 amplifies round-off to ~1e-8
+  EXPECT_NEAR(normal_to_vorticity_angle(s, {0, 0, -1}), 0.0, 1e-6);
+  EXPECT_NEAR(normal_to_vorticity_angle(s, {1, 1, 0}), std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(normal_to_vorticity_angle(s, {0, std::sin(0.5), std::cos(0.5)}), 0.5, 1e-9);
+}
