@@ -117,6 +117,9 @@ def main():
     with tempfile.TemporaryDirectory(prefix="hs_tools_") as tmp:
         t = lambda n: os.path.join(TOOLS, n)
         png(tmp, "tube_cell.png", [t("plot_tube_cell.py"), drag, os.path.join(tmp, "tube_cell.png")], "plot_tube_cell on the archive")
+        tilted = os.path.join(ROOT, "data", "resolved-v2", "checks", "2026-12-07_disc_tilt", "tilt-45", "result")
+        png(tmp, "disc_orientation.png", [t("plot_disc_orientation.py"), tilted, "--out", os.path.join(tmp, "disc_orientation.png")],
+            "plot_disc_orientation on an archived check run")
         png(tmp, "resolution.png", [t("plot_resolution.py"), os.path.join(tmp, "resolution.png"), f"drag={drag}", f"lift={lift}"],
             "plot_resolution on two archived runs")
         dataset = gz_copy(os.path.join(ROOT, "data", "resolved", "dataset.csv"), os.path.join(tmp, "dataset.csv.gz"))
