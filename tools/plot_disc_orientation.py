@@ -4,7 +4,8 @@
 or more tube-cell runs, overlaid: e.g. the same case started at different disc_tilt_deg, to see which motion each start
 ends in. Runs from before the orientation was sampled (session 39) have no angle and are refused.
 Usage: /usr/bin/python3 tools/plot_disc_orientation.py RUN_DIR [RUN_DIR ...] --out OUT.png
-       (each RUN_DIR holds timeseries.csv, or timeseries.csv.gz as in the campaign archive, and summary.json)"""
+       (each RUN_DIR holds timeseries.csv, or timeseries.csv.gz as in the campaign archive, and summary.json once the run
+       has ended: a run still going can be drawn too)"""
 import argparse
 import json
 import math
@@ -29,12 +30,18 @@ def main():
         rows = hs_tables.read_rows(hs_tables.run_file(run))
         if not rows or "normal_to_vorticity_rad" not in rows[0]:
             sys.exit(f"{run}: its time series has no normal_to_vorticity_rad column (a run from before session 39)")
-        with open(os.path.join(run, "summary.json")) as f:
-            res = json.load(f)["results"]
+        summary = os.path.join(run, "summary.json")   # absent while a run goes on, or after it was stopped
+        res = {"disc_orientation": "running or stopped"}
+        if os.path.isfile(summary):
+            with open(summary) as f:
+                res = json.load(f)["results"]
         t_ms = [1e3 * float(r["time_s"]) for r in rows]
         angles = [math.degrees(float(r["normal_to_vorticity_rad"])) for r in rows]
         start = next((x for x in angles if x == x), float("nan"))   # the first sampled angle
-        label = (f"{os.path.basename(os.path.normpath(run))}: start {start:.0f} deg, "
+        name = os.path.basename(os.path.normpath(run))
+        if name in ("result", "out", "output"):   # an archived check's result/ or a case's output/: its parent names it
+            name = os.path.basename(os.path.dirname(os.path.normpath(run)))
+        label = (f"{name}: start {start:.0f} deg, "
                  f"{res.get('disc_orientation') or 'unclassified'}")
         axes[0].plot(t_ms, angles, lw=1, label=label)
         axes[1].plot(t_ms, [float(r["di"]) for r in rows], lw=1)
