@@ -233,8 +233,10 @@ nlohmann::json TubeCellSeries::results() const {
   r["steady"] = period.steady;
   r["flow_mode"] = to_string(classify_flow_mode(inclination, phase));
   // The long axis' inclination cannot tell a rolling disc from a tumbling one (both turn it in the shear plane).
-  r["disc_orientation"] = classify_disc_orientation(after(column(kNormalToVorticity)));
-  r["normal_to_vorticity_deg_mean"] = finite_mean(after(column(kNormalToVorticity))) * 180.0 / std::numbers::pi;
+  // Samples restored from checkpoints older than the measure have none (NaN): the mean skips them.
+  const double normal_to_vorticity = finite_mean(after(column(kNormalToVorticity)));
+  r["disc_orientation"] = classify_disc_orientation(normal_to_vorticity);
+  r["normal_to_vorticity_deg_mean"] = normal_to_vorticity * 180.0 / std::numbers::pi;
   r["averages"] = {{"di", average_json(a_di)}, {"cd", average_json(a_cd)}, {"cl", average_json(a_cl)}};
   r["reynolds"] = common::channel_reynolds(config_.density_kg_m3, 2.0 * config_.radius_m, config_.u_max_m_s, mu);
   r["r_star"] = r_m / config_.radius_m;

@@ -52,16 +52,9 @@ FlowMode classify_flow_mode(std::span<const double> inclination_rad, std::span<c
   return FlowMode::intermediate;
 }
 
-std::string classify_disc_orientation(std::span<const double> normal_to_vorticity_rad) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (const double a : normal_to_vorticity_rad) {
-    if (!std::isfinite(a)) continue;
-    sum += a;
-    ++n;
-  }
-  if (n == 0) return "";
-  const double mean_deg = sum / static_cast<double>(n) * 180.0 / std::numbers::pi;
+std::string classify_disc_orientation(double mean_normal_to_vorticity_rad) {
+  if (std::isnan(mean_normal_to_vorticity_rad)) return "";
+  const double mean_deg = mean_normal_to_vorticity_rad * 180.0 / std::numbers::pi;
   if (mean_deg < 30.0) return "rolling";
   if (mean_deg > 60.0) return "in-shear-plane";
   return "oblique";

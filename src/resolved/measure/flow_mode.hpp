@@ -22,12 +22,12 @@ std::string to_string(FlowMode mode);
 FlowMode classify_flow_mode(std::span<const double> inclination_rad, std::span<const double> marker_phase_rad,
                             double swing_limit_rad = 0.35);
 
-/// Where a disc's normal points, from the mean of its angle to the local vorticity (normal_to_vorticity_angle) over
-/// the samples given (non-finite ones skipped: runs resumed from checkpoints that predate the measure): "rolling" below
-/// 30 deg (the disc spins in the shear plane: the inclination of its long axis then turns like a tumbling body's),
-/// "in-shear-plane" above 60 deg (tumbling, swinging, tank-treading), "oblique" between (kayaking); "" without samples.
-/// The thresholds split the quarter circle in three equal parts: a convention, stated so it can be checked.
-std::string classify_disc_orientation(std::span<const double> normal_to_vorticity_rad);
+/// Where a disc's normal points, from the mean of its angle to the local vorticity (normal_to_vorticity_angle) over a
+/// window: "rolling" below 30 deg (the disc spins in the shear plane: the inclination of its long axis then turns like
+/// a tumbling body's), "in-shear-plane" above 60 deg (tumbling, swinging, tank-treading), "oblique" between (kayaking);
+/// "" for a NaN mean (nothing sampled). The thresholds split the quarter circle in three equal parts: a convention,
+/// stated so it can be checked.
+std::string classify_disc_orientation(double mean_normal_to_vorticity_rad);
 
 /// RBC aspect ratio (thickness over diameter) as a spheroid, r_e ~ 0.37: the value the campaign uses for Jeffery periods.
 inline constexpr double kRbcAspectRatio = 0.37;

@@ -38,11 +38,10 @@ TEST(FlowMode, TumblingTankTreadingSteady) {
 TEST(DiscOrientation, MeanAngleToTheVorticityInThirdsOfAQuarterCircle) {
   using hs::resolved::classify_disc_orientation;
   const double deg = std::numbers::pi / 180.0;
-  const double nan = std::nan("");
-  EXPECT_EQ(classify_disc_orientation(std::vector<double>{5 * deg, 20 * deg, 35 * deg}), "rolling");        // mean 20
-  EXPECT_EQ(classify_disc_orientation(std::vector<double>{85 * deg, 90 * deg, 60 * deg}), "in-shear-plane"); // 78.3
-  EXPECT_EQ(classify_disc_orientation(std::vector<double>{40 * deg, 50 * deg}), "oblique");
-  // Samples from before the measure existed (resumed checkpoints) do not count; none at all gives no answer.
-  EXPECT_EQ(classify_disc_orientation(std::vector<double>{nan, nan, 10 * deg}), "rolling");
-  EXPECT_EQ(classify_disc_orientation(std::vector<double>{nan, nan}), "");
+  EXPECT_EQ(classify_disc_orientation(20 * deg), "rolling");
+  EXPECT_EQ(classify_disc_orientation(78 * deg), "in-shear-plane");
+  EXPECT_EQ(classify_disc_orientation(45 * deg), "oblique");
+  EXPECT_EQ(classify_disc_orientation(29.9 * deg), "rolling");
+  EXPECT_EQ(classify_disc_orientation(60.1 * deg), "in-shear-plane");
+  EXPECT_EQ(classify_disc_orientation(std::nan("")), "");   // nothing sampled
 }
