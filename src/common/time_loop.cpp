@@ -8,7 +8,7 @@
 
 namespace hs::common {
 
-TimeLoop::TimeLoop(long end_step, long first_step) : end_step_(end_step), step_(first_step) {}
+TimeLoop::TimeLoop(long end_step, long first_step) : end_step_(end_step), first_step_(first_step), step_(first_step) {}
 
 void TimeLoop::add(std::string name, std::function<void()> stage) { stages_.push_back({std::move(name), 1, std::move(stage)}); }
 
@@ -37,6 +37,12 @@ void TimeLoop::run(const std::function<void(long)>& on_step) {
 bool TimeLoop::run_steps(long n) {
   for (long i = 0; i < n && step_ < end_step_; ++i) run_one_step();
   return step_ < end_step_;
+}
+
+double TimeLoop::wall_s_per_simulated_ms(double dt_s) const {
+  const double simulated_ms = 1e3 * dt_s * static_cast<double>(step_ - first_step_);
+  if (simulated_ms <= 0.0) return 0.0;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - made_).count() / simulated_ms;
 }
 
 nlohmann::json TimeLoop::timings() const {

@@ -2,6 +2,7 @@
 // A time step as a list of named stages; the names label the wall-clock timers (STYLE R8).
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
@@ -26,6 +27,9 @@ class TimeLoop {
 
   [[nodiscard]] long step() const { return step_; }
   [[nodiscard]] long end_step() const { return end_step_; }
+  /// The pace of this loop's own steps: wall seconds since it was made per simulated ms, for a time step dt_s. A
+  /// resumed loop counts only the steps it ran, so a run's pace stays right across restarts and stages; 0 before any.
+  [[nodiscard]] double wall_s_per_simulated_ms(double dt_s) const;
   /// Wall seconds per stage, and their share of the total.
   [[nodiscard]] nlohmann::json timings() const;
   [[nodiscard]] std::string timing_table() const;
@@ -41,7 +45,9 @@ class TimeLoop {
   void run_one_step();
 
   long end_step_;
+  long first_step_;
   long step_;
+  std::chrono::steady_clock::time_point made_ = std::chrono::steady_clock::now();
   std::vector<Stage> stages_;
 };
 

@@ -281,7 +281,7 @@ int run_shear_suspension(const common::CaseRequest& request) {
                          {"placement_packing_sweeps", placement.packing_sweeps},
                          {"steps", loop.step()},
                          {"simulated_time_s", simulated_s},
-                         {"wall_s_per_simulated_ms", simulated_s > 0.0 ? ctx.wall_seconds() / (1e3 * simulated_s) : 0.0},
+                         {"wall_s_per_simulated_ms", loop.wall_s_per_simulated_ms(c.numerics.dt_s)},
                          {"membrane_steps_all_cells", all.steps},
                          {"membrane_iterations_per_step", all.steps > 0 ? static_cast<double>(all.iterations) / static_cast<double>(all.steps) : 0.0},
                          {"membrane_unconverged_steps", all.unconverged_steps},

@@ -141,7 +141,7 @@ constexpr int kHalfTimeStepStage = 2;
 /// Stage 1's outcome and final membrane, kept in the run folder when stage 2 follows (resume starts stage 2 from it).
 constexpr const char* kStageOneRecord = "stage1.json";
 
-nlohmann::json stage_numerics(const TubeCellRun& r, const common::TimeLoop& loop, const common::RunContext& ctx) {
+nlohmann::json stage_numerics(const TubeCellRun& r, const common::TimeLoop& loop) {
   const TubeCellConfig& c = r.c;
   const double simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
   return {{"dx_m", c.dx_m},
@@ -160,7 +160,7 @@ nlohmann::json stage_numerics(const TubeCellRun& r, const common::TimeLoop& loop
           {"spin_up_steps", c.spin_up_steps},
           {"steps", loop.step()},
           {"simulated_time_s", simulated_s},
-          {"wall_s_per_simulated_ms", ctx.wall_seconds() / (1e3 * simulated_s)},
+          {"wall_s_per_simulated_ms", loop.wall_s_per_simulated_ms(c.dt_s)},
           {"membrane_unconverged_steps", r.membrane->statistics().unconverged_steps},
           {"membrane_solve", membrane_solve_summary(r.membrane->statistics())}};
 }
@@ -229,7 +229,7 @@ StageOutcome run_stage(TubeCellRun& r, const common::CaseRequest& request, commo
   o.settled = settled;
   o.samples = series.size();
   o.simulated_s = r.units.to_si_time(static_cast<double>(loop.step()));
-  o.numerics = stage_numerics(r, loop, ctx);
+  o.numerics = stage_numerics(r, loop);
   o.numerics["timings"] = loop.timings();
   return o;
 }
