@@ -14,6 +14,8 @@
 #include "common/io/vtk_image.hpp"
 #include "common/stop_request.hpp"
 #include "common/parallel/gather.hpp"
+#include "resolved/membrane/rbc_mesh_generator.hpp"
+#include "resolved/membrane/triangle_mesh.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -102,6 +104,13 @@ TriangleMesh cell_mesh_tilted_from_y(const MembraneConfig& membrane, double tilt
   const double c = std::cos(tilt_rad), s = std::sin(tilt_rad);
   for (auto& v : mesh.vertices_m) v = {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
   return mesh;
+}
+
+TriangleMesh sphere_cell_mesh(const MembraneConfig& membrane, double radius_m) {
+  TriangleMesh sphere = make_sphere_mesh(build_membrane_mesh(membrane).vertex_count());
+  const double scale = radius_m / std::cbrt(3.0 * mesh_volume_m3(sphere) / (4.0 * std::numbers::pi));
+  for (auto& v : sphere.vertices_m) v = scale * v;
+  return sphere;
 }
 
 void add_coupled_cell(CellSimulation& s, const TriangleMesh& mesh, const MembraneConfig& membrane, const CellNumerics& n,

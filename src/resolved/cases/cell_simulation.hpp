@@ -47,6 +47,10 @@ struct CellSimulation {
 /// The same with the disc axis along y, then turned by `tilt_rad` about x toward z (tube-cell's disc_tilt_deg).
 [[nodiscard]] TriangleMesh cell_mesh_tilted_from_y(const MembraneConfig& membrane, double tilt_rad);
 
+/// The subdivided sphere with the vertex count of [membrane]'s mesh, scaled to the volume of a sphere of `radius_m`:
+/// a capsule whose rest (and stress-free) shape is that sphere.
+[[nodiscard]] TriangleMesh sphere_cell_mesh(const MembraneConfig& membrane, double radius_m);
+
 /// Creates the npFEM solver (material density scaled by n.membrane_mass_factor, step membrane_every dt) with its
 /// centroid at `centroid_m`, then the CoupledCell (median filter on, as Palabos-npFEM). With n.viscosity_ratio != 1
 /// the lattice (initialised) gets the cytoplasm's relaxation, n.inner_collision, on the nodes the membrane encloses. `add_forces_N`, if given, adds

@@ -67,7 +67,10 @@ std::unique_ptr<PlateCellRun> build(const PlateCellConfig& c) {
     r.lattice->initialize();   // at rest; the drive is ramped up (see drive_lu)
   }
   const Vec3 centre{0.5 * c.length_m, c.initial_height * h_m, 0.5 * c.width_m};
-  add_coupled_cell(r, cell_mesh_with_disc_axis(c.membrane, c.disc_axis), c.membrane, n, centre);
+  add_coupled_cell(r,
+                   c.shape == CellShapeKind::sphere ? sphere_cell_mesh(c.membrane, kCellRadius_m)
+                                                    : cell_mesh_with_disc_axis(c.membrane, c.disc_axis),
+                   c.membrane, n, centre);
   // Marker: the vertex furthest along the flow, on the rim in the shear plane for the default orientations.
   const auto x = r.membrane->positions_m();
   for (std::size_t v = 1; v < x.size(); ++v) {
@@ -135,13 +138,18 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
   if (ctx.rank() == 0) r.units.write(ctx.folder().file("units.txt"));
   ctx.log().info("{}: Re = {:.4g}, shear rate {:.4g} 1/s, U_max {:.4g} m/s, lattice {}x{}x{}, dx = {:g} m, dt = {:.4g} s, "
                  "tau = {:.3f}, lattice velocity {:.4g}, lattice Weissenberg {:.3g}, membrane mass factor {:.3g}, "
-                 "viscosity ratio {:.4g} (cytoplasm tau {:.3f})", type,
+                 "viscosity ratio {:.4g} (cytoplasm tau {:.3f}){}", type,
                  c.reynolds,
                  c.shear_rate_1_s, c.u_max_m_s, r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m, c.numerics.dt_s,
                  c.numerics.collision.tau, c.numerics.lattice_velocity, c.numerics.lattice_weissenberg,
                  c.numerics.membrane_mass_factor, c.numerics.viscosity_ratio,
-                 c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.tau : c.numerics.collision.tau);
-  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
+                 c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.tau : c.numerics.collision.tau,
+                 c.shape == CellShapeKind::sphere ? fmt::format(", a spherical capsule of radius {:g} m", kCellRadius_m) : "");
+  // The kernel's reach is judged against the disc's half-thickness: a sphere has none to fold across.
+  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m);
+      !w.empty() && c.shape == CellShapeKind::biconcave) {
+    ctx.log().warning("{}", w);
+  }
   if (c.stokes_analogue) {
     ctx.log().info("Stokes-flow analogue: every viscosity x {:g} (Ca, viscosity ratio and Bq kept)", c.analogue_viscosity_factor);
   }

@@ -113,6 +113,11 @@ PlateCellConfig read_plate_cell(hs::common::ConfigFile& file, PlateFlow flow, bo
   const auto geometry = read_plate_box(root, c);
   auto cell = root.section_or_empty("cell");
   c.initial_height = cell.number_in_or("initial_height", 0.05, 0.95, 0.5);
+  c.shape = cell.one_of_or("shape", {"biconcave", "sphere"}, "biconcave") == "sphere" ? CellShapeKind::sphere
+                                                                                 : CellShapeKind::biconcave;
+  if (c.shape == CellShapeKind::sphere && cell.has("disc_axis")) {
+    cell.fail("disc_axis", "applies to shape = \"biconcave\" (a sphere has no disc axis)");
+  }
   const std::string axis = cell.one_of_or("disc_axis", {"x", "y", "z"}, flow == PlateFlow::shear ? "y" : "z");
   c.disc_axis = axis == "x" ? 0 : (axis == "y" ? 1 : 2);
   const double viscosity_ratio = read_cytoplasm_viscosity_ratio(cell, c.density_kg_m3 * c.kinematic_viscosity_m2_s);

@@ -30,6 +30,7 @@ struct PlateCellConfig : PlateBox {
   // [cell]
   double initial_height = 0.5;      // y0 / H of the centroid at release
   int disc_axis = 1;                // 0 x, 1 y, 2 z: direction of the disc's symmetry axis at release
+  CellShapeKind shape = CellShapeKind::biconcave;   // sphere: a capsule of radius kCellRadius_m (Ca's a)
   MembraneConfig membrane;          // [membrane]
   CellNumerics numerics;            // [numerics]
   // [run]
@@ -49,7 +50,8 @@ struct PlateCellConfig : PlateBox {
   long spin_up_steps = 0;           // migration: the drive is switched on smoothly over these steps (shear: 0)
 };
 
-/// RBC radius a = D0 / 2 = 3.91 um of the capillary number Ca = mu gamma_dot a / k_s (seed paper D0 = 7.82 um).
+/// RBC radius a = D0 / 2 = 3.91 um of the capillary number Ca = mu gamma_dot a / k_s (seed paper D0 = 7.82 um); with
+/// [cell] shape = "sphere" the capsule's radius, so that Ca is the capsule's own.
 inline constexpr double kCellRadius_m = 3.91e-6;
 
 /// Reads and checks a `shear` or `migration` case strictly (`flow` picks which [flow] keys apply). `quick` caps the

@@ -52,11 +52,7 @@ std::array<int, 3> box_nodes(const ShearSuspensionConfig& c) {
 TriangleMesh rest_mesh(const ShearSuspensionConfig& c) {
   TriangleMesh rbc = build_membrane_mesh(c.membrane);
   if (c.shape == CellShapeKind::biconcave) return rbc;
-  TriangleMesh sphere = make_sphere_mesh(rbc.vertex_count());
-  const double radius = std::cbrt(3.0 * mesh_volume_m3(rbc) / (4.0 * std::numbers::pi));
-  const double scale = radius / std::cbrt(3.0 * mesh_volume_m3(sphere) / (4.0 * std::numbers::pi));
-  for (auto& v : sphere.vertices_m) v = scale * v;
-  return sphere;
+  return sphere_cell_mesh(c.membrane, std::cbrt(3.0 * mesh_volume_m3(rbc) / (4.0 * std::numbers::pi)));
 }
 
 struct SuspensionRun {

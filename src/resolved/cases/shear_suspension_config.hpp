@@ -25,8 +25,6 @@ inline constexpr double kCellContactStiffness_N_m = 2.0e-5;
 /// takes over smoothly where they start within its range.
 inline constexpr double kPlacementGap_m = 0.5e-6;
 
-enum class CellShapeKind { biconcave, sphere };
-
 /// Flow along x, walls at y = 0 (moving at -U/2) and y = H (+U/2), periodic in x and z.
 /// [geometry] and [fluid]: the PlateBox.
 struct ShearSuspensionConfig : PlateBox {

@@ -90,6 +90,10 @@ struct NpfemSettings {
   int viscous_proxy_refresh_steps = 8;
 };
 
+/// The rest shape a case builds its cell with: the RBC of [membrane], or the subdivided sphere of the same vertex
+/// count (a capsule: the stiff-sphere check of the stresslet, the capsule-in-shear benchmark).
+enum class CellShapeKind { biconcave, sphere };
+
 /// Everything the [membrane] section describes: mesh, material, solver.
 struct MembraneConfig {
   RbcMeshOptions mesh;

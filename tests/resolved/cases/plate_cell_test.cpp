@@ -12,6 +12,7 @@
 
 #include "common/errors.hpp"
 #include "resolved/cases/case_text_helpers.hpp"
+#include "resolved/cases/cell_simulation.hpp"
 #include "resolved/cases/plate_cell_checks.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/cases/plate_cell_series.hpp"
@@ -52,6 +53,33 @@ TEST(PlateCellConfig, CapillaryNumberGivesTheShearRate) {
   // gamma = Ca k_s / (mu a) with Ca = 1, k_s = 2.5 uN/m (default), mu = 1.025 mPa s, a = 3.91 um.
   EXPECT_NEAR(c.shear_rate_1_s, 2.5e-6 / (1025.0 * 1e-6 * 3.91e-6), 1e-9);
   EXPECT_EQ(c.disc_axis, 1);
+}
+
+TEST(PlateCellConfig, TheSphereShapeIsReadAndADiscAxisBesideItRefused) {
+  const std::string shear = shipped("shear");
+  EXPECT_EQ(read(shear, PlateFlow::shear).shape, CellShapeKind::biconcave);   // the default
+  const std::string sphere = with(shear, "disc_axis = \"y\"", "shape = \"sphere\"");
+  EXPECT_EQ(read(sphere, PlateFlow::shear).shape, CellShapeKind::sphere);
+  // A disc axis beside the sphere is a mistake the user should hear about, not silently ignored.
+  EXPECT_THROW(read(with(shear, "disc_axis = \"y\"", "disc_axis = \"y\"\nshape = \"sphere\""), PlateFlow::shear),
+               common::ConfigError);
+  EXPECT_THROW(read(with(shear, "disc_axis = \"y\"", "shape = \"cube\""), PlateFlow::shear), common::ConfigError);
+}
+
+TEST(SphereCellMesh, HasTheMembraneMeshsVertexCountAndTheVolumeOfItsSphere) {
+  const PlateCellConfig c = read(shipped("shear"), PlateFlow::shear);
+  const double a = kCellRadius_m;
+  const TriangleMesh sphere = sphere_cell_mesh(c.membrane, a);
+  EXPECT_EQ(sphere.vertex_count(), build_membrane_mesh(c.membrane).vertex_count());
+  const double volume = 4.0 / 3.0 * std::numbers::pi * a * a * a;
+  EXPECT_NEAR(mesh_volume_m3(sphere), volume, 1e-12 * volume);   // scaled to it: round-off
+  // Every vertex on one sphere about the origin, a little outside a: a polyhedron inscribed in a sphere holds less
+  // volume than the sphere, so the one with the volume of radius a has its vertices further out (258 vertices: < 2 %).
+  for (const auto& v : sphere.vertices_m) {
+    EXPECT_GT(norm(v), a);
+    EXPECT_LT(norm(v), 1.02 * a);
+    EXPECT_NEAR(norm(v), norm(sphere.vertices_m[0]), 1e-12 * a);
+  }
 }
 
 TEST(PlateCellConfig, ShearRateAndCapillaryTogetherAreRefused) {
