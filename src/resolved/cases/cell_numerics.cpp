@@ -130,9 +130,9 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
   numerics.derived("membrane_mass_factor", n.membrane_mass_factor);  // 0 in the input means 1.25 nu_lu k
 }
 
-std::string kernel_width_warning(DeltaKernel kernel, double dx_m) {
+std::string kernel_width_warning(DeltaKernel kernel, double dx_m, CellShapeKind shape) {
   const double reach_m = 0.5 * support_points(kernel) * dx_m;
-  if (reach_m <= kCellHalfThickness_m) return {};
+  if (reach_m <= kCellHalfThickness_m || shape == CellShapeKind::sphere) return {};
   return fmt::format("the {}-point IBM kernel reaches {:.2g} um from each vertex at dx = {:g} m, more than the cell's "
                      "half-thickness ({:.2g} um): past its membrane transient the cell can fold (docs/resolved-coupling.md, "
                      "\"The IBM kernel's width\"); the campaign's tube cases use ibm_kernel_points = 2 at dx = 1 um",

@@ -9,6 +9,7 @@
 #include "resolved/ibm/coupled_cell.hpp"
 #include "resolved/lbm/boundary_links.hpp"
 #include "resolved/lbm/collision_params.hpp"
+#include "resolved/membrane/membrane_parameters.hpp"
 
 namespace hs::resolved {
 
@@ -52,7 +53,9 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
 
 /// A warning for the run's log when the IBM kernel reaches further from a vertex than the RBC's half-thickness: both
 /// faces of the disc then force the same fluid, and past its membrane transient the cell folds into a compact shape
-/// (docs/resolved-coupling.md, "The IBM kernel's width"). Empty when the kernel is narrow enough.
-[[nodiscard]] std::string kernel_width_warning(DeltaKernel kernel, double dx_m);
+/// (docs/resolved-coupling.md, "The IBM kernel's width"). Empty when the kernel is narrow enough, and for a sphere,
+/// which has no thin disc to fold across.
+[[nodiscard]] std::string kernel_width_warning(DeltaKernel kernel, double dx_m,
+                                               CellShapeKind shape = CellShapeKind::biconcave);
 
 }  // namespace hs::resolved

@@ -145,9 +145,7 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                  c.numerics.membrane_mass_factor, c.numerics.viscosity_ratio,
                  c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.tau : c.numerics.collision.tau,
                  c.shape == CellShapeKind::sphere ? fmt::format(", a spherical capsule of radius {:g} m", kCellRadius_m) : "");
-  // The kernel's reach is judged against the disc's half-thickness: a sphere has none to fold across.
-  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m);
-      !w.empty() && c.shape == CellShapeKind::biconcave) {
+  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m, c.shape); !w.empty()) {
     ctx.log().warning("{}", w);
   }
   if (c.stokes_analogue) {

@@ -213,7 +213,7 @@ int run_shear_suspension(const common::CaseRequest& request) {
                  placement_seconds, c.shear_rate_1_s, c.reynolds,
                  r.nodes[0], r.nodes[1], r.nodes[2], c.numerics.dx_m, c.numerics.dt_s, c.numerics.collision.tau,
                  c.numerics.membrane_mass_factor);
-  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m); !w.empty()) ctx.log().warning("{}", w);
+  if (const std::string w = kernel_width_warning(c.numerics.ibm.kernel, c.numerics.dx_m, c.shape); !w.empty()) ctx.log().warning("{}", w);
   ShearSuspensionSeries series(c, r.cells->size(), placement.cell_volume_m3);
   std::unique_ptr<common::CsvWriter> csv;
   std::unique_ptr<common::PvdSeries> pvd;

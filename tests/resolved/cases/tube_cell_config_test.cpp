@@ -236,6 +236,7 @@ TEST(CellNumerics, WarnsWhenTheKernelReachesPastTheCellsHalfThickness) {
   EXPECT_FALSE(kernel_width_warning(DeltaKernel::three_point, 1.0e-6).empty());
   EXPECT_TRUE(kernel_width_warning(DeltaKernel::two_point, 1.0e-6).empty());
   EXPECT_TRUE(kernel_width_warning(DeltaKernel::four_point, 0.5e-6).empty());
+  EXPECT_TRUE(kernel_width_warning(DeltaKernel::four_point, 1.0e-6, CellShapeKind::sphere).empty());   // no disc to fold
 }
 
 }  // namespace
