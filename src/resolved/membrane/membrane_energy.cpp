@@ -115,6 +115,8 @@ double MembraneEnergy::triangle_terms(const Positions& x, Positions& gradient) c
   const double lam = moduli_.skalak_lambda_pN_um;
   const double mu = moduli_.hardening_mu_pN_um;
   const double w = moduli_.area_weight_pN_um;
+  const bool neo_hookean = moduli_.law == InPlaneLaw::neo_hookean;
+  const double g = 0.25 * lam;   // G_s
   auto f = [&](double s) {
     const double e2 = (s - 1.0) * (s - 1.0);
     return 0.25 * mu * e2 * e2 + 0.125 * lam * s * s * s * s - 0.25 * lam * s * s;
@@ -138,11 +140,19 @@ double MembraneEnergy::triangle_terms(const Positions& x, Positions& gradient) c
     sym2_eigen(c, eig, v);
     const double s1 = std::sqrt(std::max(eig[0], 1e-300));
     const double s2 = std::sqrt(std::max(eig[1], 1e-300));
-    const Eigen::Vector2d d = area_projection(s1, s2);
-    energy += r.area0 * (0.5 * (f(s1) + f(s2)) - f_rest + 0.5 * w * ((s1 - d[0]) * (s1 - d[0]) + (s2 - d[1]) * (s2 - d[1])));
     // dE/dF = F V diag(c_i) V^T with c_i = dE/ds_i / s_i; the vertex forces are dE/dF R0^-T
-    const double c1 = r.area0 * (0.5 * df(s1) + w * (s1 - d[0])) / s1;
-    const double c2 = r.area0 * (0.5 * df(s2) + w * (s2 - d[1])) / s2;
+    double c1 = 0.0, c2 = 0.0;
+    if (neo_hookean) {
+      const double j2 = 1.0 / (s1 * s1 * s2 * s2);   // 1 / (area ratio)^2
+      energy += r.area0 * 0.5 * g * (s1 * s1 + s2 * s2 + j2 - 3.0);
+      c1 = r.area0 * g * (1.0 - j2 / (s1 * s1));
+      c2 = r.area0 * g * (1.0 - j2 / (s2 * s2));
+    } else {
+      const Eigen::Vector2d d = area_projection(s1, s2);
+      energy += r.area0 * (0.5 * (f(s1) + f(s2)) - f_rest + 0.5 * w * ((s1 - d[0]) * (s1 - d[0]) + (s2 - d[1]) * (s2 - d[1])));
+      c1 = r.area0 * (0.5 * df(s1) + w * (s1 - d[0])) / s1;
+      c2 = r.area0 * (0.5 * df(s2) + w * (s2 - d[1])) / s2;
+    }
     const double m00 = c1 * v(0, 0) * v(0, 0) + c2 * v(0, 1) * v(0, 1);
     const double m01 = c1 * v(0, 0) * v(1, 0) + c2 * v(0, 1) * v(1, 1);
     const double m11 = c1 * v(1, 0) * v(1, 0) + c2 * v(1, 1) * v(1, 1);
@@ -237,8 +247,11 @@ double MembraneEnergy::area(const Positions& x) const {
 
 Eigen::SparseMatrix<double> MembraneEnergy::stiffness_proxy(double area_fraction) const {
   std::vector<Eigen::Triplet<double>> trip;
+  // The neo-Hookean small-strain energy G (e1^2 + e2^2) + G (e1 + e2)^2 is the modified Skalak one's with w = 4 G_s = lambda.
+  const double area_weight =
+      moduli_.law == InPlaneLaw::neo_hookean ? moduli_.skalak_lambda_pN_um : moduli_.area_weight_pN_um;
   const double w_tri =
-      0.5 * (moduli_.skalak_lambda_pN_um + moduli_.hardening_mu_pN_um) + area_fraction * moduli_.area_weight_pN_um;
+      0.5 * (moduli_.skalak_lambda_pN_um + moduli_.hardening_mu_pN_um) + area_fraction * area_weight;
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     Eigen::Matrix<double, 3, 2> d;   // vertex weights of the two columns of F
     d << -1.0, -1.0, 1.0, 0.0, 0.0, 1.0;

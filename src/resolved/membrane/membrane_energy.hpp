@@ -13,11 +13,17 @@ namespace hs::resolved {
 /// Vertex coordinates, one row per vertex (internal units: micrometres).
 using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 
+/// The triangles' in-plane law: Palabos-npFEM's modified Skalak law with its area penalty (the RBC's), or the
+/// neo-Hookean law of the capsule benchmarks (Ramanujan & Pozrikidis 1998: W = (G_s/2)(I1 - 1 + 1/(I2 + 1)), area
+/// dilation resisted by the law itself, small-strain K_s = 3 G_s).
+enum class InPlaneLaw { npfem_skalak, neo_hookean };
+
 /// Moduli in the solver's internal units (um, us, fg; force pN, energy pN um = 1e-18 J).
 struct EnergyModuli {
+  InPlaneLaw law = InPlaneLaw::npfem_skalak;
   double skalak_lambda_pN_um = 0.0;     // lambda = 4 G_s
-  double hardening_mu_pN_um = 0.0;      // mu of the (mu/4)(s - 1)^4 hardening term
-  double area_weight_pN_um = 0.0;       // PD area weight w = 2 K
+  double hardening_mu_pN_um = 0.0;      // mu of the (mu/4)(s - 1)^4 hardening term (npfem_skalak only)
+  double area_weight_pN_um = 0.0;       // PD area weight w = 2 K (npfem_skalak only)
   double bending_pN_um = 0.0;           // bending modulus k_c
   double volume_modulus_pN_um2 = 0.0;   // k_V
   double global_area_pN_um = 0.0;       // k_A
@@ -32,6 +38,8 @@ struct EnergyModuli {
 /// c_b = 1: sum_hinges 3/(A0 + A1) |K x|^2 approximates integral (2H)^2 dA (on unit spheres we measure 1.015 x 16 pi
 /// for icosphere meshes and 1.12 x 16 pi for octahedron meshes; tested), so the bending term is the Helfrich energy
 /// (k_c/2) integral (2H - 2H_rest)^2 dA with the rest shape as spontaneous curvature.
+/// With InPlaneLaw::neo_hookean the triangle term is A0 (G_s/2)(s1^2 + s2^2 + 1/(s1 s2)^2 - 3), G_s = lambda/4, and
+/// carries no area penalty.
 class MembraneEnergy {
  public:
   MembraneEnergy(const Positions& rest_um, std::vector<std::array<int, 3>> triangles, const EnergyModuli& moduli);

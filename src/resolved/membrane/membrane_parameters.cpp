@@ -14,9 +14,22 @@ MembraneParameters parse_material(hs::common::ConfigSection& s) {
   const MembraneParameters d;
   MembraneParameters p;
   p.shear_modulus_N_m = s.positive_or("shear_modulus_N_m", d.shear_modulus_N_m);
-  p.strain_hardening_ratio = s.non_negative_or("strain_hardening_ratio", d.strain_hardening_ratio);
-  p.area_modulus_N_m = s.positive_or("area_modulus_N_m", d.area_modulus_N_m);
-  p.global_area_modulus_N_m = s.non_negative_or("global_area_modulus_N_m", d.global_area_modulus_N_m);
+  // The neo-Hookean law resists area change by itself (K_s = 3 G_s at small strain): the Skalak law's hardening and
+  // area penalty do not apply, and the whole-membrane area term is off unless asked for.
+  p.law = s.one_of_or("law", {"npfem_skalak", "neo_hookean"}, "npfem_skalak") == "neo_hookean" ? InPlaneLaw::neo_hookean
+                                                                                              : InPlaneLaw::npfem_skalak;
+  if (p.law == InPlaneLaw::neo_hookean) {
+    for (const char* key : {"strain_hardening_ratio", "area_modulus_N_m"}) {
+      if (s.has(key)) s.fail(key, "applies to law = \"npfem_skalak\" (the neo-Hookean law has the shear modulus alone)");
+    }
+    p.strain_hardening_ratio = 0.0;
+    p.area_modulus_N_m = 0.0;
+  } else {
+    p.strain_hardening_ratio = s.non_negative_or("strain_hardening_ratio", d.strain_hardening_ratio);
+    p.area_modulus_N_m = s.positive_or("area_modulus_N_m", d.area_modulus_N_m);
+  }
+  p.global_area_modulus_N_m = s.non_negative_or(
+      "global_area_modulus_N_m", p.law == InPlaneLaw::neo_hookean ? 0.0 : d.global_area_modulus_N_m);
   p.bending_modulus_J = s.positive_or("bending_modulus_J", d.bending_modulus_J);
   p.volume_modulus_Pa = s.positive_or("volume_modulus_Pa", d.volume_modulus_Pa);
   p.density_kg_m3 = s.positive_or("density_kg_m3", d.density_kg_m3);

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "common/config/config_file.hpp"
+#include "resolved/membrane/membrane_energy.hpp"
 #include "resolved/membrane/rbc_mesh_generator.hpp"
 
 namespace hs::resolved {
@@ -25,6 +26,9 @@ inline constexpr double kStressFreeReducedVolume = 0.95;
 
 /// Material of the RBC membrane, SI. Every default names its source.
 struct MembraneParameters {
+  /// The in-plane law: the RBC's modified Skalak law (below: shear modulus, hardening, area penalty), or neo-Hookean
+  /// (`law = "neo_hookean"`: the shear modulus alone, the capsule benchmarks'; no hardening or area penalty).
+  InPlaneLaw law = InPlaneLaw::npfem_skalak;
   /// In-plane shear modulus G_s: 2.5 uN/m, the low end of the literature range 2.5-12 uN/m (Evans 1973; Hochmuth &
   /// Waugh 1987; rbc_blood_properties.csv). Palabos-npFEM's own calibration on the Mills experiment amounts to
   /// lambda/4 = 1.25 uN/m (reference §3.2); Mills' 5.3 uN/m (their 3-D FE model) makes this model too stiff

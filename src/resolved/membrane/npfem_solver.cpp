@@ -41,7 +41,8 @@ std::vector<Vec3> to_vec3(const Positions& p, double scale) {
 
 EnergyModuli internal_moduli(const MembraneParameters& m) {
   const double lambda = 4.0 * m.shear_modulus_N_m * pN_um_per_N_m;   // small-strain G_s = lambda / 4
-  return {.skalak_lambda_pN_um = lambda,
+  return {.law = m.law,
+          .skalak_lambda_pN_um = lambda,
           .hardening_mu_pN_um = m.strain_hardening_ratio * lambda,
           .area_weight_pN_um = 2.0 * m.area_modulus_N_m * pN_um_per_N_m,
           .bending_pN_um = m.bending_modulus_J * pN_um_per_J,

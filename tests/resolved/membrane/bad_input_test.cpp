@@ -136,3 +136,24 @@ TEST(MembraneStressFreeShape, BiconcaveByDefaultOblateWhenAskedFor) {
                 .find("stress_free_shape"),
             std::string::npos);
 }
+
+TEST(MembraneLaw, NeoHookeanDropsTheSkalakTermsAndRefusesTheirKeys) {
+  auto parse = [](const std::string& toml) {
+    auto f = hs::common::ConfigFile::parse(toml, "case.toml");
+    auto s = f->root().section_or_empty("membrane");
+    const MembraneConfig c = parse_membrane_config(s);
+    f->finish();
+    return c.material;
+  };
+  EXPECT_EQ(parse("[membrane]\n").law, InPlaneLaw::npfem_skalak);
+  const MembraneParameters nh = parse("[membrane]\nlaw = \"neo_hookean\"\n");
+  EXPECT_EQ(nh.law, InPlaneLaw::neo_hookean);
+  EXPECT_EQ(nh.strain_hardening_ratio, 0.0);
+  EXPECT_EQ(nh.global_area_modulus_N_m, 0.0);   // the law resists area change itself
+  EXPECT_EQ(parse("[membrane]\nlaw = \"neo_hookean\"\nglobal_area_modulus_N_m = 1e-6\n").global_area_modulus_N_m, 1e-6);
+  EXPECT_NE(config_error("[membrane]\nlaw = \"neo_hookean\"\narea_modulus_N_m = 5e-6\n").find("area_modulus_N_m"),
+            std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nlaw = \"neo_hookean\"\nstrain_hardening_ratio = 1\n").find("strain_hardening_ratio"),
+            std::string::npos);
+  EXPECT_NE(config_error("[membrane]\nlaw = \"mooney\"\n").find("law"), std::string::npos);
+}

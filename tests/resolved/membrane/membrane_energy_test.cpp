@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -211,4 +212,66 @@ TEST(MembraneEnergy, BendingOfASphereIsMeshIndependentAndNearHelfrich) {
   std::printf("Helfrich sphere: E / 8 pi k_c - 1 = %.3e (642), %.3e (2562)\n", e642, e2562);
   EXPECT_LT(std::abs(e2562 - e642), 0.002);
   EXPECT_LT(std::abs(e2562), 0.02);
+}
+
+// The neo-Hookean law of the capsule benchmarks (Barthes-Biesel & Rallison 1981; Ramanujan & Pozrikidis 1998):
+// W = (G/2) (s1^2 + s2^2 + 1/(s1 s2)^2 - 3), written out here from those papers. Unlike the deformations above, these
+// change the area, which the law must resist by itself (no penalty term is added).
+TEST(MembraneEnergy, NeoHookeanFlatPatchMatchesItsLawInAreaChangingStretch) {
+  const double g_s = 2.5;
+  const Positions rest = flat_patch(6);
+  MembraneEnergy e(rest, patch_triangles(6), {.law = InPlaneLaw::neo_hookean, .skalak_lambda_pN_um = 4.0 * g_s});
+  Positions g;
+  for (const auto& [s1, s2] : {std::pair{1.3, 1.0}, std::pair{1.2, 1.2}, std::pair{1.5, 0.8}, std::pair{0.9, 0.95}}) {
+    Positions x = rest;
+    x.col(0) *= s1;
+    x.col(1) *= s2;
+    const double law = 0.5 * g_s * (s1 * s1 + s2 * s2 + 1.0 / (s1 * s1 * s2 * s2) - 3.0);
+    // Round-off of a few dozen operations on O(G) terms: 1e-12 relative.
+    EXPECT_NEAR(e.evaluate(x, g) / (e.rest_area() * law), 1.0, 1e-12) << "stretches " << s1 << ", " << s2;
+  }
+}
+
+TEST(MembraneEnergy, NeoHookeanSmallStrainModuliAreGAndThreeG) {
+  // Linear limit of the neo-Hookean law: W = G (e1^2 + e2^2) + G (e1 + e2)^2, i.e. shear modulus G and area modulus
+  // K = 3 G (surface Poisson ratio 1/2): equibiaxial e1 = e2 = eps gives W = 2 K eps^2 = 6 G eps^2 (the area-
+  // changing mode the capsule's linear deformation D = (25/12) Ca_G depends on), pure shear 2 G eps^2. At eps = 1e-4
+  // the O(eps) correction is held by a band of 5 eps (the equibiaxial cubic term is -4 eps relative); round-off 1e-8.
+  const double g_s = 2.5, eps = 1e-4;
+  const Positions rest = flat_patch(6);
+  MembraneEnergy e(rest, patch_triangles(6), {.law = InPlaneLaw::neo_hookean, .skalak_lambda_pN_um = 4.0 * g_s});
+  Positions g, x = rest;
+  x *= 1.0 + eps;
+  EXPECT_NEAR(e.evaluate(x, g) / (6.0 * g_s * eps * eps * e.rest_area()), 1.0, 5.0 * eps);
+  x = rest;
+  x.col(0) *= 1.0 + eps;
+  x.col(1) /= 1.0 + eps;
+  EXPECT_NEAR(e.evaluate(x, g) / (2.0 * g_s * eps * eps * e.rest_area()), 1.0, 5.0 * eps);
+}
+
+TEST(MembraneEnergy, NeoHookeanGradientMatchesCentralDifferences) {
+  const TriangleMesh m = make_rbc_mesh({.vertex_count = 66});
+  const Positions rest = to_um(m);
+  EnergyModuli moduli = all_terms();
+  moduli.law = InPlaneLaw::neo_hookean;
+  MembraneEnergy e(rest, m.triangles, moduli);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  Positions x = rest;
+  for (int i = 0; i < x.rows(); ++i)
+    for (int k = 0; k < 3; ++k) x(i, k) += noise(rng);
+  x.col(1) *= 1.3;   // area-changing stretch
+  Positions g, scratch;
+  e.evaluate(x, g);
+  const double step = 1e-6;
+  for (int i = 0; i < x.rows(); i += 5) {
+    for (int k = 0; k < 3; ++k) {
+      Positions xp = x, xm = x;
+      xp(i, k) += step;
+      xm(i, k) -= step;
+      const double fd = (e.evaluate(xp, scratch) - e.evaluate(xm, scratch)) / (2.0 * step);
+      // as GradientMatchesCentralDifferences
+      EXPECT_NEAR(g(i, k), fd, 1e-5 * (1.0 + std::abs(fd))) << "vertex " << i << " component " << k;
+    }
+  }
 }
