@@ -17,6 +17,7 @@
 #include "resolved/cases/stokes_analogue.hpp"
 #include "resolved/measure/stresslet.hpp"
 #include "resolved/measure/cell_shape.hpp"
+#include "resolved/measure/equivalent_ellipsoid.hpp"
 
 namespace hs::resolved {
 namespace {
@@ -120,6 +121,7 @@ PlateCellSample sample_state(const PlateCellRun& r, double time_s) {
   const auto& f = r.cell->report().fluid_forces_N;
   if (f.size() == x.size()) s.stresslet_xy_N_m = stresslet(x, f)[0][1];   // none before the first membrane step
   s.volume_m3 = r.membrane->volume_m3();
+  s.taylor_deformation = equivalent_ellipsoid(x, r.membrane->triangles()).shear_plane_taylor_deformation({0.0, 0.0, 1.0});
   return s;
 }
 

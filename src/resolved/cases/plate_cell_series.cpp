@@ -15,7 +15,8 @@ namespace {
 
 constexpr std::size_t kOldPackedFields = 10;   // checkpoints before the energy books: no header, 10 fields a sample
 constexpr std::size_t kEnergyPackedFields = 19;   // checkpoints with the energy books, before the stresslet
-constexpr std::size_t kPackedFields = 21;      // now: a header -kPackedFields (a time is never negative), then samples
+constexpr std::size_t kStressletPackedFields = 21;   // with the stresslet and volume, before the Taylor deformation
+constexpr std::size_t kPackedFields = 22;      // now: a header -kPackedFields (a time is never negative), then samples
 /// Share of the series treated as start-up before averages (mean inclination, DI, tank-treading rate) are taken.
 constexpr double kTransientFraction = 0.5;
 
@@ -59,7 +60,8 @@ TumblingPeriod tumbling_period(std::span<const double> time_s, std::span<const d
 std::vector<std::string> PlateCellSeries::columns() {
   return {"time_s", "di", "inclination_rad", "marker_phase_rad", "centroid_x_m", "centroid_y_m", "centroid_z_m",
           "y_over_h", "velocity_x_m_s", "velocity_y_m_s", "membrane_fluid_power_W", "membrane_viscous_power_W",
-          "membrane_elastic_energy_J", "membrane_kinetic_energy_J", "di_gyration", "stresslet_xy_N_m"};
+          "membrane_elastic_energy_J", "membrane_kinetic_energy_J", "di_gyration", "stresslet_xy_N_m",
+          "taylor_deformation"};
 }
 
 std::vector<double> PlateCellSeries::row(std::size_t i) const {
@@ -69,7 +71,7 @@ std::vector<double> PlateCellSeries::row(std::size_t i) const {
   return {s.time_s, s.di, s.inclination_rad, s.marker_phase_rad, s.centroid_m.x, s.centroid_m.y, s.centroid_m.z,
           s.centroid_m.y / config_.gap_m, s.velocity_m_s.x, s.velocity_m_s.y, b.mean_fluid_power_W(),
           b.mean_viscous_power_W(), s.energy.elastic_energy_J, s.energy.kinetic_energy_J, s.di_gyration,
-          s.stresslet_xy_N_m};
+          s.stresslet_xy_N_m, s.taylor_deformation};
 }
 
 std::vector<double> PlateCellSeries::pack() const {
@@ -82,15 +84,17 @@ std::vector<double> PlateCellSeries::pack() const {
                            s.centroid_m.z, s.velocity_m_s.x, s.velocity_m_s.y, s.velocity_m_s.z, e.external_work_J,
                            e.viscous_dissipation_J, e.damping_dissipation_J, e.elastic_work_J, e.kinetic_step_loss_J,
                            e.solver_residual_work_J, e.elastic_energy_J, e.kinetic_energy_J, s.di_gyration,
-                           s.stresslet_xy_N_m, s.volume_m3});
+                           s.stresslet_xy_N_m, s.volume_m3, s.taylor_deformation});
   }
   return out;
 }
 
 void PlateCellSeries::unpack(std::span<const double> flat) {
   samples_.clear();
-  // Three layouts: now (header -21), with the energy books but no stresslet (header -19), older (no header).
+  // Four layouts: now (header -22), without the Taylor deformation (-21), with the energy books but no stresslet (-19),
+  // older (no header).
   const bool header = !flat.empty() && (flat[0] == -static_cast<double>(kPackedFields) ||
+                                        flat[0] == -static_cast<double>(kStressletPackedFields) ||
                                         flat[0] == -static_cast<double>(kEnergyPackedFields));
   const std::size_t fields = header ? static_cast<std::size_t>(-flat[0]) : kOldPackedFields;
   for (std::size_t k = header ? 1 : 0; k + fields <= flat.size(); k += fields) {
@@ -103,10 +107,11 @@ void PlateCellSeries::unpack(std::span<const double> flat) {
                   .solver_residual_work_J = v[15], .elastic_energy_J = v[16], .kinetic_energy_J = v[17]};
       s.di_gyration = v[18];
     }
-    if (fields == kPackedFields) {
+    if (fields >= kStressletPackedFields) {
       s.stresslet_xy_N_m = v[19];
       s.volume_m3 = v[20];
     }
+    if (fields == kPackedFields) s.taylor_deformation = v[21];
     samples_.push_back(s);
   }
 }
@@ -204,11 +209,12 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["tumbling_period_over_jeffery"] = tumble.period_s / jeffery;
   if (samples_.size() < 2 || from + 1 >= samples_.size()) return r;
   // Mean inclination and DI over the second half; the marker's mean angular rate there is the tank-treading rate.
-  double sum_incl = 0.0, sum_di = 0.0, sum_di_gyration = 0.0;
+  double sum_incl = 0.0, sum_di = 0.0, sum_di_gyration = 0.0, sum_taylor = 0.0;
   for (std::size_t i = from; i < samples_.size(); ++i) {
     sum_incl += incl[i];
     sum_di += di[i];
     sum_di_gyration += di_gyration[i];
+    sum_taylor += samples_[i].taylor_deformation;
   }
   const double n = static_cast<double>(samples_.size() - from);
   unwrap(phase, 2.0 * std::numbers::pi);
@@ -217,6 +223,15 @@ nlohmann::json PlateCellSeries::shear_results() const {
   r["mean_inclination_deg"] = sum_incl / n * 180.0 / std::numbers::pi;
   r["di_mean"] = sum_di / n;
   r["di_gyration_mean"] = sum_di_gyration / n;   // from the gyration radii: not set by single vertices (#26)
+  r["taylor_deformation_mean"] = sum_taylor / n;  // the equivalent ellipsoid's, in the shear plane (capsule benchmarks)
+  // Whether that D is steady: its mean over the last quarter of the run against the quarter before (a capsule's steady
+  // state has no whole revolutions of the body to wait for; its membrane's can take longer than its shape).
+  const std::size_t third_quarter = (3 * samples_.size()) / 4;
+  double sum_q3 = 0.0, sum_q4 = 0.0;
+  for (std::size_t i = from; i < samples_.size(); ++i) (i < third_quarter ? sum_q3 : sum_q4) += samples_[i].taylor_deformation;
+  const double q3 = sum_q3 / static_cast<double>(std::max<std::size_t>(1, third_quarter - from));
+  const double q4 = sum_q4 / static_cast<double>(std::max<std::size_t>(1, samples_.size() - third_quarter));
+  r["taylor_deformation_last_quarter_change"] = q3 > 0.0 ? q4 / q3 - 1.0 : 0.0;
   r["tank_treading_frequency_hz"] = mode == FlowMode::tank_treading ? std::abs(rate) / (2.0 * std::numbers::pi) : 0.0;
   r["marker_rate_rad_s"] = rate;
   // The cell's share of the suspension's shear stress: [eta] = <S_xy> / (mu gamma_dot V), so that a dilute
@@ -249,7 +264,7 @@ void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const doubl
   const double rate = tank_treading ? rev.rate_rad_s() : 0.0;
   r["tank_treading_frequency_settled_hz"] = rate / (2.0 * std::numbers::pi);
   r["tank_treading_frequency_over_shear_rate"] = rate / (2.0 * std::numbers::pi) / config_.shear_rate_1_s;
-  double sum_incl = 0.0, sum_di = 0.0, n = 0.0;
+  double sum_incl = 0.0, sum_di = 0.0, sum_taylor = 0.0, n = 0.0;
   double incl_min = 0.0, incl_max = 0.0;
   for (const auto& s : samples_) {
     if (s.time_s < rev.window_start_s || s.time_s > rev.window_end_s) continue;
@@ -257,6 +272,7 @@ void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const doubl
     incl_max = n > 0.0 ? std::max(incl_max, s.inclination_rad) : s.inclination_rad;
     sum_incl += s.inclination_rad;
     sum_di += s.di;
+    sum_taylor += s.taylor_deformation;
     n += 1.0;
   }
   // Half the range of the outline's angle over whole revolutions (a swinging cell swings twice per revolution).
@@ -264,6 +280,7 @@ void PlateCellSeries::settled_tank_treading(FlowMode mode, std::span<const doubl
   const double di_window = n > 0.0 ? sum_di / n : r.value("di_mean", 0.0);
   r["mean_inclination_settled_deg"] = n > 0.0 ? sum_incl / n * 180.0 / std::numbers::pi : r.value("mean_inclination_deg", 0.0);
   r["di_settled"] = di_window;
+  r["taylor_deformation_settled"] = n > 0.0 ? sum_taylor / n : r.value("taylor_deformation_mean", 0.0);
   r["settled_window_s"] = {rev.window_start_s, rev.window_end_s};
   // The bound of the measured axes: DI's longest and shortest extents, which for a tank-treading RBC both lie in the
   // shear plane (its axis of symmetry turns into that plane).

@@ -27,6 +27,7 @@ struct PlateCellSample {
   MembraneEnergySnapshot energy;   // the membrane's energy books and stored energies (power balance)
   double stresslet_xy_N_m = 0.0;   // S_xy of the fluid's forces on the membrane (measure/stresslet.hpp)
   double volume_m3 = 0.0;          // the cell's enclosed volume
+  double taylor_deformation = 0.0; // D of the equivalent ellipsoid in the shear plane (the capsule literature's)
 };
 
 class PlateCellSeries {

@@ -288,6 +288,30 @@ TEST(ShearResults, ATumblingCellDoesNotTankTread) {
   EXPECT_FALSE(series.tank_treading_settled());
 }
 
+TEST(ShearResults, TheCapsulesTaylorDeformationIsAveragedAndItsDriftReported) {
+  // A capsule's D relaxing as 0.2 (1 - e^{-t/T}) over 8 T: the second half's mean is the integral's, and the last quarter
+  // against the third is (q4 / q3 - 1), both in closed form; the packed series keeps D (checkpoint round trip).
+  const PlateCellConfig c = read(shipped("shear/capsule"), PlateFlow::shear);
+  PlateCellSeries series(c);
+  const double t_relax = 0.01;
+  const int n = 8000;
+  for (int i = 0; i < n; ++i) {
+    PlateCellSample s;
+    s.time_s = 8.0 * t_relax * (i + 0.5) / n;   // midpoints: the sample means are the integrals' to O(1/n^2)
+    s.taylor_deformation = 0.2 * (1.0 - std::exp(-s.time_s / t_relax));
+    series.add(s);
+  }
+  const auto mean = [&](double a, double b) {   // mean of 0.2 (1 - e^{-t/T}) over [a T, b T]
+    return 0.2 * (1.0 - (std::exp(-a) - std::exp(-b)) / (b - a));
+  };
+  const nlohmann::json r = series.results();
+  EXPECT_NEAR(r["taylor_deformation_mean"].get<double>(), mean(4.0, 8.0), 1e-9);
+  EXPECT_NEAR(r["taylor_deformation_last_quarter_change"].get<double>(), mean(6.0, 8.0) / mean(4.0, 6.0) - 1.0, 1e-9);
+  PlateCellSeries restored(c);
+  restored.unpack(series.pack());
+  EXPECT_EQ(restored.samples().back().taylor_deformation, series.samples().back().taylor_deformation);
+}
+
 TEST(PlateCellConfig, StopWhenSettledIsReadForShearOnly) {
   EXPECT_TRUE(read(shipped("shear/fischer-korzeniewski"), PlateFlow::shear).stop_when_settled);
   EXPECT_FALSE(read(shipped("shear/membrane-viscosity"), PlateFlow::shear).stop_when_settled);   // absent: off
