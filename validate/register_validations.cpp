@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The single list of validations `hemoscale validate NAME` runs: one line per validation.
 #include "app/registry.hpp"
+#include "validate/capsule_validation.hpp"
 #include "validate/lift_transfer_validation.hpp"
 #include "validate/pries_validation.hpp"
 #include "validate/resolved_dataset_validation.hpp"
@@ -20,6 +21,7 @@ std::map<std::string, TaskEntry> validations() {
   r["lift-transfer"] = {"the learned lift closure (R_c = 25 um) vs resolved runs at R_c = 15 um (data/resolved/transfer-r15; --closures FILE)", hs::closures::validate_lift_transfer};
   r["resolved-dataset"] = {"the campaign's data/resolved/dataset.csv: every (Re, r*) row, the acceptance rules, ranges vs the seed paper", hs::campaign::validate_resolved_dataset};
   r["tank-treading"] = {"one RBC's tank-treading frequency in shear vs Fischer & Korzeniewski 2015 (data/resolved-shear/fischer-korzeniewski; its campaign)", hs::resolved::validate_tank_treading};
+  r["capsule"] = {"a neo-Hookean capsule's steady Taylor deformation in shear vs Ramanujan & Pozrikidis 1998 and Doddi & Bagchi 2008 (data/resolved-shear/capsule; its campaign)", hs::resolved::validate_capsule};
   r["tumbling-threshold"] = {"one RBC's tumbling to tank-treading transition in shear vs Fischer & Korzeniewski 2013 (data/resolved-shear/threshold-23.9; its campaign)", hs::resolved::validate_tumbling_threshold};
   return r;
 }

@@ -168,6 +168,40 @@ TEST(ValidateExitCodes, TumblingThresholdPassesOnlyOneTransitionAtTheMeasuredStr
   EXPECT_EQ(missing.code, 1) << missing.output;
 }
 
+namespace {
+
+/// A capsule dataset at the five reference Ca_G with D = `scale` x the middle of the references' steady ranges
+/// (Doddi & Bagchi's alone at 0.0375), the given last-quarter drift on the third row and converged npFEM.
+fs::path write_capsule_dataset(const std::string& name, double scale, double drift = 0.0) {
+  const fs::path dir = fs::temp_directory_path() / ("hs_validate_capsule_" + name);
+  fs::create_directories(dir / "capsule");
+  std::ofstream out(dir / "capsule" / "dataset.csv");
+  out << "g_s,ca,taylor_deformation,taylor_deformation_last_quarter_change,npfem_steps,npfem_unconverged_steps\n";
+  const double ca[] = {0.0375, 0.075, 0.15, 0.3, 0.6};
+  const double mid[] = {0.083, 0.1615, 0.270, 0.3885, 0.501};   // (min d_low + max d_high) / 2 of the steady rows
+  for (int i = 0; i < 5; ++i) {
+    out << 1e-5 << ',' << ca[i] << ',' << scale * mid[i] << ',' << (i == 2 ? drift : 0.001) << ",10000,0\n";
+  }
+  return dir;
+}
+
+}  // namespace
+
+TEST(ValidateExitCodes, CapsuleAcceptsTheReferencesRangeAndNotTenPerCentBelowIt) {
+  const auto validate = [](const fs::path& dir) { return run("validate capsule --dataset " + dir.string()); };
+  const Result good = validate(write_capsule_dataset("good", 1.0));
+  EXPECT_EQ(good.code, 0) << good.output;
+  // 10 % below the middle is outside every band (the widest: 0.261-0.279 at Ca_G 0.15, -5 %: 0.248 > 0.243).
+  const Result low = validate(write_capsule_dataset("low", 0.90));
+  EXPECT_EQ(low.code, 1) << low.output;
+  EXPECT_TRUE(says(low, "FAILED  Ca_G 0.0375: D inside the references' range")) << low.output;
+  const Result drifting = validate(write_capsule_dataset("drifting", 1.0, 0.02));   // D still growing 2 % a quarter
+  EXPECT_EQ(drifting.code, 1) << drifting.output;
+  EXPECT_TRUE(says(drifting, "FAILED  Ca_G 0.15: D steady")) << drifting.output;
+  const Result missing = run("validate capsule --dataset /nonexistent");
+  EXPECT_EQ(missing.code, 1) << missing.output;
+}
+
 TEST(ValidateExitCodes, TheCommittedShearDatasetsGiveTheirDocumentedVerdicts) {
   // data/resolved-shear (docs/resolved-coupling.md "Validation in shear"): the six frequencies inside the cells'
   // scatter, the 104 mPa s angles inside the donors' range, the 10.7 mPa s angles below it (3 failures); the

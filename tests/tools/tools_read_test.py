@@ -147,6 +147,12 @@ def main():
                                        for e, g, a in ((10.7, 56.2, 9.0), (104.0, 3.85, 19.0))]}, f)
         png(tmp, "tank_treading.png", [t("plot_tank_treading.py"), result, os.path.join(ROOT, "data", "reference"),
                                        os.path.join(tmp, "tank_treading.png")], "plot_tank_treading on a validation JSON")
+        capsule = os.path.join(tmp, "capsule.json")
+        with open(capsule, "w") as f:   # the shape of `validate capsule --json`
+            json.dump({"runs": [{"ca_g": c, "taylor_deformation": d} for c, d in ((0.0375, 0.085), (0.15, 0.27))]}, f)
+        png(tmp, "capsule.png", [t("plot_capsule.py"), capsule,
+                                 os.path.join(ROOT, "data", "reference", "capsule_shear_taylor_deformation.csv"),
+                                 os.path.join(tmp, "capsule.png")], "plot_capsule on a validation JSON")
         fit = fit_folder(tmp)
         png(tmp, "fit.png", [t("plot_fit.py"), fit, "-o", os.path.join(tmp, "fit.png")], "plot_fit on gzipped predictions and Pareto front")
         shear, migration, stenosis = plate_and_stenosis_runs(tmp)
