@@ -4,10 +4,10 @@
 // Bagchi 2008 (data/reference/capsule_shear_taylor_deformation.csv). At each Ca the run must be steady (D over its last
 // quarter within 1 % of the quarter before), its npFEM converged on >= 99 % of its steps, and its D inside the two
 // references' range widened by 5 % of it: the references disagree with each other by up to 7 % (0.261 against 0.279 at
-// Ca_E 0.05), and the model's walls (confinement 0.2, the references' none) raise D by a few per cent. The small-Ca
+// Ca_E 0.05), and the model's walls (confinement 0.133, the references' none) raise D by a per cent or two. The small-Ca
 // theory D = (25/4) Ca_E (Barthes-Biesel 1980) is printed beside it. Reads the dataset only: nothing is simulated. Exit 1
-// on any failure, naming it. --dataset DIR reads DIR/capsule/dataset.csv. With --json FILE it also writes FILE.png
-// (tools/plot_capsule.py).
+// on any failure, naming it. --dataset DIR reads DIR/dataset.csv (e.g. data/resolved-shear/capsule-confinement-0.2).
+// With --json FILE it also writes FILE.png (tools/plot_capsule.py).
 #include "validate/capsule_validation.hpp"
 
 #include <algorithm>
@@ -64,8 +64,8 @@ void plot(const fs::path& json, const fs::path& reference) {
 int validate_capsule(const hs::common::TaskOptions& options) {
   const fs::path source(HS_SOURCE_DIR);
   const fs::path reference = source / "data" / "reference" / "capsule_shear_taylor_deformation.csv";
-  const fs::path datasets = options.dataset ? *options.dataset : source / "data" / "resolved-shear";
-  const fs::path csv = datasets / "capsule" / "dataset.csv";
+  const fs::path folder = options.dataset ? *options.dataset : source / "data" / "resolved-shear" / "capsule";
+  const fs::path csv = folder / "dataset.csv";
   std::map<double, ReferenceRange> references;   // by Ca_G, rounded to 4 digits
   const auto key = [](double ca_g) { return std::round(ca_g * 1e4) / 1e4; };
   for (const auto& row : read_text_table(reference)) {

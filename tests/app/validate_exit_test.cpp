@@ -174,8 +174,8 @@ namespace {
 /// (Doddi & Bagchi's alone at 0.0375), the given last-quarter drift on the third row and converged npFEM.
 fs::path write_capsule_dataset(const std::string& name, double scale, double drift = 0.0) {
   const fs::path dir = fs::temp_directory_path() / ("hs_validate_capsule_" + name);
-  fs::create_directories(dir / "capsule");
-  std::ofstream out(dir / "capsule" / "dataset.csv");
+  fs::create_directories(dir);
+  std::ofstream out(dir / "dataset.csv");
   out << "g_s,ca,taylor_deformation,taylor_deformation_last_quarter_change,npfem_steps,npfem_unconverged_steps\n";
   const double ca[] = {0.0375, 0.075, 0.15, 0.3, 0.6};
   const double mid[] = {0.083, 0.1615, 0.270, 0.3885, 0.501};   // (min d_low + max d_high) / 2 of the steady rows
