@@ -213,6 +213,15 @@ TEST(ValidateExitCodes, TheCommittedShearDatasetsGiveTheirDocumentedVerdicts) {
   EXPECT_FALSE(says(tt, "FAILED  f at")) << tt.output;
   const Result threshold = run("validate tumbling-threshold");
   EXPECT_EQ(threshold.code, 0) << threshold.output;
+  // The capsule (docs "The capsule benchmark"): inside the references' range at confinement 0.133, above it at two Ca
+  // with the walls closer (0.2).
+  const Result capsule = run("validate capsule");
+  EXPECT_EQ(capsule.code, 0) << capsule.output;
+  EXPECT_TRUE(says(capsule, "capsule: 16 of 16 checks passed")) << capsule.output;
+  const Result closer = run("validate capsule --dataset " HS_SOURCE_DIR "/data/resolved-shear/capsule-confinement-0.2");
+  EXPECT_EQ(closer.code, 1) << closer.output;
+  EXPECT_TRUE(says(closer, "FAILED  Ca_G 0.0375: D inside")) << closer.output;
+  EXPECT_TRUE(says(closer, "FAILED  Ca_G 0.3: D inside")) << closer.output;
 }
 
 TEST(ValidateExitCodes, StretchingQuickPassesAndFailsInANarrowerBand) {
