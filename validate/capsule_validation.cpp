@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -24,6 +23,7 @@
 
 #include "common/check_list.hpp"
 #include "common/run_folder.hpp"
+#include "validate/plot_beside_json.hpp"
 #include "validate/text_table.hpp"
 
 namespace hs::resolved {
@@ -43,21 +43,6 @@ struct ReferenceRange {
   double low = 1e300, high = -1e300;
   std::vector<std::string> sources;
 };
-
-/// FILE.png beside the JSON (tools/plot_capsule.py), when Debian's python3 with matplotlib is there.
-void plot(const fs::path& json, const fs::path& reference) {
-  const fs::path script = fs::path(HS_SOURCE_DIR) / "tools" / "plot_capsule.py";
-  if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) return;
-  fs::path png = json;
-  png.replace_extension(".png");
-  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}' '{}' > /dev/null 2>&1", script.string(),
-                                      json.string(), reference.string(), png.string());
-  if (std::system(cmd.c_str()) == 0) {
-    fmt::print("plot: {}\n", png.string());
-  } else {
-    fmt::print("plot_capsule.py failed (matplotlib missing?): no PNG written\n");
-  }
-}
 
 }  // namespace
 
@@ -131,7 +116,7 @@ int validate_capsule(const hs::common::TaskOptions& options) {
     result["provenance"] = hs::common::provenance();
     checks.write_to(result);
     hs::common::write_json(*options.json_file, result);
-    plot(*options.json_file, reference);
+    hs::validate::plot_beside_json("plot_capsule.py", *options.json_file, reference);
   }
   return checks.exit_code();
 }

@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <numbers>
@@ -34,6 +33,7 @@
 #include "common/run_folder.hpp"
 #include "resolved/cases/plate_cell_config.hpp"
 #include "resolved/membrane/membrane_parameters.hpp"
+#include "validate/plot_beside_json.hpp"
 #include "validate/text_table.hpp"
 
 namespace hs::resolved {
@@ -292,21 +292,6 @@ nlohmann::json check_inclination(const fs::path& reference, double eta_o_mPa_s, 
   return out;
 }
 
-/// FILE.png beside the JSON (tools/plot_tank_treading.py), when Debian's python3 with matplotlib is there.
-void plot(const fs::path& json, const fs::path& reference) {
-  const fs::path script = fs::path(HS_SOURCE_DIR) / "tools" / "plot_tank_treading.py";
-  if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) return;
-  fs::path png = json;
-  png.replace_extension(".png");
-  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}' '{}' > /dev/null 2>&1", script.string(),
-                                      json.string(), reference.string(), png.string());
-  if (std::system(cmd.c_str()) == 0) {
-    fmt::print("plot: {}\n", png.string());
-  } else {
-    fmt::print("plot_tank_treading.py failed (matplotlib missing?): no PNG written\n");
-  }
-}
-
 }  // namespace
 
 int validate_tank_treading(const hs::common::TaskOptions& options) {
@@ -357,7 +342,7 @@ int validate_tank_treading(const hs::common::TaskOptions& options) {
     result["provenance"] = hs::common::provenance();
     checks.write_to(result);
     hs::common::write_json(*options.json_file, result);
-    plot(*options.json_file, reference);
+    hs::validate::plot_beside_json("plot_tank_treading.py", *options.json_file, reference);
   }
   return checks.exit_code();
 }

@@ -37,6 +37,15 @@ std::string config_error(const std::string& toml) {
   return "";
 }
 
+/// The material of a [membrane] section (ConfigError on bad input).
+MembraneParameters parse(const std::string& toml) {
+  auto f = hs::common::ConfigFile::parse(toml, "case.toml");
+  auto s = f->root().section_or_empty("membrane");
+  const MembraneConfig c = parse_membrane_config(s);
+  f->finish();
+  return c.material;
+}
+
 }  // namespace
 
 TEST(BadMesh, OpenSurfaceIsRejected) {
@@ -83,13 +92,6 @@ TEST(BadMembraneConfig, NonPositiveModuliNameTheKey) {
 }
 
 TEST(MembraneDissipation, FrictionByDefaultViscosityWhenAskedFor) {
-  auto parse = [](const std::string& toml) {
-    auto f = hs::common::ConfigFile::parse(toml, "case.toml");
-    auto s = f->root().section_or_empty("membrane");
-    const MembraneConfig c = parse_membrane_config(s);
-    f->finish();
-    return c.material;
-  };
   // Without either key: the friction of the campaign, no viscosity (earlier runs unchanged).
   const MembraneParameters legacy = parse("[membrane]\n");
   EXPECT_EQ(legacy.deformation_friction_Pa_s_m, MembraneParameters{}.deformation_friction_Pa_s_m);
@@ -138,13 +140,6 @@ TEST(MembraneStressFreeShape, BiconcaveByDefaultOblateWhenAskedFor) {
 }
 
 TEST(MembraneLaw, NeoHookeanDropsTheSkalakTermsAndRefusesTheirKeys) {
-  auto parse = [](const std::string& toml) {
-    auto f = hs::common::ConfigFile::parse(toml, "case.toml");
-    auto s = f->root().section_or_empty("membrane");
-    const MembraneConfig c = parse_membrane_config(s);
-    f->finish();
-    return c.material;
-  };
   EXPECT_EQ(parse("[membrane]\n").law, InPlaneLaw::npfem_skalak);
   const MembraneParameters nh = parse("[membrane]\nlaw = \"neo_hookean\"\n");
   EXPECT_EQ(nh.law, InPlaneLaw::neo_hookean);
