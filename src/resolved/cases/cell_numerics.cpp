@@ -48,6 +48,11 @@ CellNumerics read_cell_numerics(hs::common::ConfigSection n) {
   c.max_lattice_weissenberg = n.number_in_or("max_lattice_weissenberg", 1e-4, 10.0, kMaxLatticeWeissenbergDefault);
   c.collision.model = collision_model_from_name(n.one_of_or("collision", {"trt", "bgk", "regularized"}, "trt"));
   c.collision.magic = n.greater_than_or("trt_magic", 0.0, trt_magic_default);
+  // collision_params.hpp: above the bound the regularised collision's Lambda, and with it the IBM's slip, grows with tau.
+  c.collision.odd_rate_max = n.number_in_or("odd_rate_max", regularized_from_odd_rate, 1.999, regularized_odd_rate_max_default);
+  if (c.collision.model != CollisionModel::regularized && n.has("odd_rate_max")) {
+    n.fail("odd_rate_max", "bounds the odd relaxation rate of collision = \"regularized\" only: remove it");
+  }
   c.wall = n.one_of_or("wall", {"bouzidi", "half_way"}, "bouzidi") == "bouzidi" ? WallRule::bouzidi : WallRule::half_way;
   c.membrane_every = static_cast<int>(n.integer_in_or("membrane_every", 1, 100, 2));   // Palabos timestep_ShapeOp
   c.membrane_mass_factor = n.number_in_or("membrane_mass_factor", 1.0, 1.0e4, 0.0);
@@ -117,6 +122,7 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
     n.inner_collision = n.collision;
     n.inner_collision.tau = 0.5 + n.viscosity_ratio * (n.collision.tau - 0.5);
     numerics.derived("tau_cytoplasm", n.inner_collision.tau);
+    numerics.derived("lambda_cytoplasm", n.inner_collision.bulk_lambda());
     // The explicit membrane update feels the viscous drag of both sides; the stiffer one sets the mass (a guess, not
     // measured: the factor was calibrated at ratio 1).
     nu_lu = std::max(nu_lu, (n.inner_collision.tau - 0.5) / 3.0);
@@ -126,6 +132,7 @@ void derive_cell_numerics(CellNumerics& n, double kinematic_viscosity_m2_s, doub
   }
   numerics.derived("time_step_s", n.dt_s);
   numerics.derived("tau", n.collision.tau);
+  numerics.derived("lambda", n.collision.bulk_lambda());   // the IBM's slip follows it (collision_params.hpp)
   numerics.derived("lattice_velocity", n.lattice_velocity);          // lowered if tau hit its cap
   numerics.derived("membrane_mass_factor", n.membrane_mass_factor);  // 0 in the input means 1.25 nu_lu k
 }

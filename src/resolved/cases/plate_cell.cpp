@@ -210,6 +210,9 @@ int run_plate_cell(const common::CaseRequest& request, PlateFlow flow) {
                          {"tau", c.numerics.collision.tau},
                          {"viscosity_ratio", c.numerics.viscosity_ratio},   // cytoplasm / plasma; 1: one fluid
                          {"tau_cytoplasm", c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.tau : c.numerics.collision.tau},
+                         // (tau+ - 1/2)(tau- - 1/2) outside and in: the IBM's slip grows with it (collision_params.hpp)
+                         {"lambda", c.numerics.collision.bulk_lambda()},
+                         {"lambda_cytoplasm", c.numerics.viscosity_ratio != 1.0 ? c.numerics.inner_collision.bulk_lambda() : c.numerics.collision.bulk_lambda()},
                          {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
                          {"lattice_weissenberg", c.numerics.lattice_weissenberg},   // gamma (tau - 1/2) dt
                          {"membrane_mass_factor", c.numerics.membrane_mass_factor},

@@ -154,6 +154,9 @@ nlohmann::json stage_numerics(const TubeCellRun& r, const common::TimeLoop& loop
                                       (c.collision.tau - 0.5) * c.dt_s},
           {"viscosity_ratio", c.viscosity_ratio},   // cytoplasm / plasma; 1: one fluid
           {"tau_cytoplasm", c.viscosity_ratio != 1.0 ? c.inner_collision.tau : c.collision.tau},
+          // (tau+ - 1/2)(tau- - 1/2) outside and in: the IBM's slip grows with it (collision_params.hpp)
+          {"lambda", c.collision.bulk_lambda()},
+          {"lambda_cytoplasm", c.viscosity_ratio != 1.0 ? c.inner_collision.bulk_lambda() : c.collision.bulk_lambda()},
           {"cytoplasm_nodes", r.cytoplasm ? static_cast<long>(r.cytoplasm->inner_nodes()) : 0L},
           {"membrane_mass_factor", c.membrane_mass_factor},
           {"membrane_velocity_relaxation", r.membrane->velocity_relaxation()},   // C_alpha per npFEM step

@@ -31,7 +31,14 @@ inline constexpr double trt_magic_default = 3.0 / 16.0;
 /// wall error the shifted closure removes only to second order: measured, tube Poiseuille with Bouzidi walls, L2 error
 /// at R = 10 within 22 % of TRT's up to tau 60 and equal to it at R = 20; a lower bound moves the walls more
 /// (omega- = 1, Lambda = 30: +4.5 % at R = 10), a higher one damps less. (Our measurement, lbm tube tests.)
+/// The immersed boundary has no such closure: its slip grows with Lambda (Seta et al. 2014, PRE 89:023307: the odd
+/// relaxation time sets the IB-LBM's boundary slip). Measured, a capsule in shear: D the same within 1 % at tau 2.9,
+/// 8.1 and 25.8 with TRT at Lambda = 3/16, but 5 % and 20 % lower at 8.1 and 25.8 with this bound
+/// (docs/resolved-coupling.md, "The lattice's tau is Lambda"). [numerics] odd_rate_max raises it.
 inline constexpr double regularized_odd_rate_max_default = 1.8;
+/// regularized: the kernel regularises the even part where TRT's own odd rate exceeds this (tau > 3.9 at Lambda =
+/// 3/16), whatever the bound on the odd rate: below, regularized is TRT bit for bit.
+inline constexpr double regularized_from_odd_rate = 1.8;
 
 struct CollisionParams {
   CollisionModel model = CollisionModel::trt;
@@ -49,25 +56,28 @@ struct CollisionParams {
     if (model == CollisionModel::regularized) return trt < odd_rate_max ? trt : odd_rate_max;
     return trt;
   }
-  /// The regularised kernel runs where the odd rate is bounded (tau > 3.9 at the defaults); below, regularized is TRT
-  /// (bit for bit): there TRT damps every mode, and the even filtering alone changed the tube error at tau 0.6 (L2
-  /// 3.51e-4 vs TRT's 3.30e-4 at R = 20, 2.18e-3 vs 1.75e-3 at R = 10; measured, tube Poiseuille, Bouzidi walls).
+  /// The regularised kernel runs where TRT's odd rate exceeds regularized_from_odd_rate (tau > 3.9 at Lambda = 3/16),
+  /// the odd rate itself bounded by odd_rate_max; below, regularized is TRT (bit for bit): there TRT damps every mode,
+  /// and the even filtering alone changed the tube error at tau 0.6 (L2 3.51e-4 vs TRT's 3.30e-4 at R = 20, 2.18e-3
+  /// vs 1.75e-3 at R = 10; measured, tube Poiseuille, Bouzidi walls).
   [[nodiscard]] bool regularizes() const {
-    return model == CollisionModel::regularized && 1.0 / (0.5 + magic / (tau - 0.5)) > odd_rate_max;
+    return model == CollisionModel::regularized && 1.0 / (0.5 + magic / (tau - 0.5)) > regularized_from_odd_rate;
   }
+  /// The bulk's Lambda = (tau+ - 1/2)(tau- - 1/2): the TRT magic, (tau - 1/2)^2 for BGK, and above the odd bound the
+  /// regularised collision's larger one. The immersed boundary's slip follows it (regularized_odd_rate_max_default).
+  [[nodiscard]] double bulk_lambda() const { return (tau - 0.5) * (1.0 / omega_minus() - 0.5); }
   /// The Lambda whose wall location the interpolated closures reproduce: the operator's own, except for the
   /// regularised collision, whose closures carry TRT's at Lambda = magic (boundary_links.hpp).
   [[nodiscard]] double closure_lambda() const {
-    if (model == CollisionModel::regularized) return magic;
-    return (tau - 0.5) * (1.0 / omega_minus() - 0.5);
+    return model == CollisionModel::regularized ? magic : bulk_lambda();
   }
   /// Lattice kinematic viscosity (D3Q19, c_s^2 = 1/3).
   [[nodiscard]] double viscosity_lu() const { return (tau - 0.5) / 3.0; }
   void validate() const {
     if (!(tau > 0.5)) throw std::invalid_argument("relaxation time tau must be > 1/2");
     if (model != CollisionModel::bgk && !(magic > 0.0)) throw std::invalid_argument("TRT magic parameter must be > 0");
-    if (model == CollisionModel::regularized && !(odd_rate_max > 0.0 && odd_rate_max < 2.0)) {
-      throw std::invalid_argument("regularized: odd_rate_max must be in (0, 2)");
+    if (model == CollisionModel::regularized && !(odd_rate_max >= regularized_from_odd_rate && odd_rate_max < 2.0)) {
+      throw std::invalid_argument("regularized: odd_rate_max must be in [1.8, 2)");
     }
   }
 };

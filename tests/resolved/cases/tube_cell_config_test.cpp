@@ -122,6 +122,28 @@ TEST(TubeCellConfig, TheWeissenbergBoundIsRefusedWithoutAReferenceShearRate) {
   }
 }
 
+TEST(TubeCellConfig, TheOddRateBoundSetsTheCytoplasmsLambda) {
+  // The campaign's cytoplasm at tau 15.5 with the regularised collision's default bound (omega- <= 1.8): Lambda =
+  // (15.5 - 1/2)(1/1.8 - 1/2) = 5/6, while the plasma at tau 3.06 (below 3.9) keeps TRT's 3/16. odd_rate_max 1.99
+  // keeps 3/16 inside too (collision_params.hpp; the IBM's slip follows Lambda).
+  const TubeCellConfig campaign = read_drag_case(0.5);
+  EXPECT_NEAR(campaign.collision.bulk_lambda(), 3.0 / 16.0, 1e-12);
+  EXPECT_NEAR(campaign.inner_collision.bulk_lambda(), 15.0 * (1.0 / 1.8 - 0.5), 1e-12);
+  const std::pair<std::string, std::string> kept{"collision = \"regularized\"", "collision = \"regularized\"\nodd_rate_max = 1.99"};
+  const TubeCellConfig kept_lambda = read_drag_case(0.5, {kept});
+  EXPECT_NEAR(kept_lambda.inner_collision.bulk_lambda(), 3.0 / 16.0, 1e-12);
+  EXPECT_TRUE(kept_lambda.inner_collision.regularizes());   // the even part still regularised above tau 3.9
+  EXPECT_NEAR(kept_lambda.inner_collision.tau, 15.5, 1e-12);
+  // With TRT the key has nothing to bound: refused by name.
+  const std::pair<std::string, std::string> trt{"collision = \"regularized\"", "collision = \"trt\"\nodd_rate_max = 1.99"};
+  try {
+    (void)read_drag_case(0.5, {trt});
+    FAIL() << "expected a ConfigError";
+  } catch (const common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("odd_rate_max"), std::string::npos) << e.what();
+  }
+}
+
 TEST(TubeCellSeries, CdUsesTheRelativeSpeedAndClTheUndisturbedSpeed) {
   const TubeCellConfig c = read_drag_case(0.5);   // U_max = 0.01 m/s, R = 25 um, rho = 1025 kg/m^3
   const double volume = std::numbers::pi / 6.0 * std::pow(5.0e-6, 3);   // d_p = 5 um exactly

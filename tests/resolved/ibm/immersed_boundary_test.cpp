@@ -5,9 +5,9 @@
 #include <mpi.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
+#include "ibm_test_helpers.hpp"
 #include "resolved/ibm/immersed_boundary.hpp"
 
 namespace hs::resolved {
@@ -34,20 +34,6 @@ Vec3 summed_force_field(FluidLattice& lattice) {
   double s[3] = {sum.x, sum.y, sum.z};
   MPI_Allreduce(MPI_IN_PLACE, s, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   return {s[0], s[1], s[2]};
-}
-
-/// Markers spread roughly every 1 lu over a sphere (Fibonacci lattice), each carrying its share of the area.
-Markers sphere_markers(const Vec3& centre, double radius, int count) {
-  Markers m;
-  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-  for (int k = 0; k < count; ++k) {
-    const double z = 1.0 - 2.0 * (k + 0.5) / count;
-    const double r = std::sqrt(1.0 - z * z);
-    m.x_lu.push_back(centre + radius * Vec3{r * std::cos(golden * k), r * std::sin(golden * k), z});
-    m.u_lu.push_back({});
-    m.area_lu.push_back(4.0 * std::numbers::pi * radius * radius / count);
-  }
-  return m;
 }
 
 class IbmKernels : public ::testing::TestWithParam<int> {};
