@@ -203,13 +203,15 @@ TEST(ValidateExitCodes, CapsuleAcceptsTheReferencesRangeAndNotTenPerCentBelowIt)
 }
 
 TEST(ValidateExitCodes, TheCommittedShearDatasetsGiveTheirDocumentedVerdicts) {
-  // data/resolved-shear (docs/resolved-coupling.md "Validation in shear"): the six frequencies inside the cells'
-  // scatter, the 104 mPa s angles inside the donors' range, the 10.7 mPa s angles below it (3 failures); the
-  // transition between Ca 0.2 and 0.3 inside the measured thresholds.
+  // data/resolved-shear (docs/resolved-coupling.md "Validation in shear", "The lattice's tau is Lambda"): the six
+  // frequencies inside the cells' scatter, the 10.7 mPa s angles below the donors' range (3 failures) and, since the
+  // TRT rerun, the 104 mPa s angle at Ca 6.25 by 0.07 deg below it; the transition between Ca 0.2 and 0.3 inside the
+  // measured thresholds.
   const Result tt = run("validate tank-treading");
   EXPECT_EQ(tt.code, 1) << tt.output;
-  EXPECT_TRUE(says(tt, "tank-treading: 47 of 50 checks passed, 3 failed")) << tt.output;
+  EXPECT_TRUE(says(tt, "tank-treading: 46 of 50 checks passed, 4 failed")) << tt.output;
   EXPECT_TRUE(says(tt, "FAILED  inclination at 10.7 mPa s, Ca 2.04")) << tt.output;
+  EXPECT_TRUE(says(tt, "FAILED  inclination at 104 mPa s, Ca 6.25")) << tt.output;
   EXPECT_FALSE(says(tt, "FAILED  f at")) << tt.output;
   const Result threshold = run("validate tumbling-threshold");
   EXPECT_EQ(threshold.code, 0) << threshold.output;
